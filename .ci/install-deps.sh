@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs everything Prism needs to build and test, from Debian 12 packages only.
+# Idempotent: apt-get skips what is already installed. Run as root.
+set -euo pipefail
+
+packages=(
+  g++ cmake make pkg-config       # toolchain
+  libglm-dev                        # vector math
+  libopenimageio-dev openimageio-tools  # image files (and oiiotool for comparisons)
+  libcli11-dev                      # command-line parsing
+  nlohmann-json3-dev                # statistics as JSON
+  libgtest-dev                      # tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,83 @@
+#include "core/accel.h"
+
+#include "core/geometry.h"
+#include "core/group_bvh.h"
+
+namespace prism {
+
+const char* accelKindName(AccelKind kind) {
+  switch (kind) {
+  case AccelKind::Groups: return "groups";
+  case AccelKind::None: return "none";
+  }
+  return "?";
+}
+
+bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, Interval range,
+                        double& t) {
+  switch (ref.kind) {
+  case PrimitiveKind::Sphere: return intersect(scene.spheres[ref.index], ray, range, t);
+  case PrimitiveKind::Ellipsoid: return intersect(scene.ellipsoids[ref.index], ray, range, t);
+  case PrimitiveKind::Polygon:
+    return intersect(scene.polygons[ref.index], scene.polygonVertices.data(), ray, range, t);
+  }
+  return false;
+}
+
+Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point) {
+  switch (ref.kind) {
+  case PrimitiveKind::Sphere: return normalAt(scene.spheres[ref.index], point);
+  case PrimitiveKind::Ellipsoid: return normalAt(scene.ellipsoids[ref.index], point);
+  case PrimitiveKind::Polygon: return scene.polygons[ref.index].normal;
+  }
+  return Vec3(0.0, 0.0, 1.0);
+}
+
+namespace {
+
+// Every primitive tested against every ray: the reference the hierarchies are
+// checked against, and the baseline that shows what a hierarchy buys.
+class BruteForce final : public Accel {
+public:
+  explicit BruteForce(const Scene& scene) : scene_(scene), refs_(scene.allPrimitives()) {}
+
+  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                  Hit& hit) const override {
+    bool found = false;
+    for (const PrimitiveRef& ref : refs_) {
+      if (skip != nullptr && ref == *skip) continue;
+      double t;
+      if (intersectPrimitive(scene_, ref, ray, range, t)) {
+        range.max = t;
+        hit = {t, ref};
+        found = true;
+      }
+    }
+    return found;
+  }
+
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override {
+    for (const PrimitiveRef& ref : refs_) {
+      if (skip != nullptr && ref == *skip) continue;
+      double t;
+      if (intersectPrimitive(scene_, ref, ray, range, t)) return true;
+    }
+    return false;
+  }
+
+private:
+  const Scene& scene_;
+  std::vector<PrimitiveRef> refs_;
+};
+
+} // namespace
+
+std::unique_ptr<Accel> makeAccel(const Scene& scene, AccelKind kind) {
+  switch (kind) {
+  case AccelKind::Groups: return std::make_unique<GroupBvh>(scene);
+  case AccelKind::None: return std::make_unique<BruteForce>(scene);
+  }
+  return nullptr;
+}
+
+} // namespace prism

@@ -1,0 +1,45 @@
+// Ray queries over a scene's primitives. An Accel answers two questions: the
+// nearest hit along a ray (for eye and secondary rays) and whether anything at
+// all is hit (for shadow rays, which may stop at the first blocker).
+#pragma once
+
+#include "core/scene.h"
+
+#include <memory>
+#include <string>
+
+namespace prism {
+
+struct Hit {
+  double t = 0.0;
+  PrimitiveRef primitive;
+};
+
+// How rays find primitives. `Groups` uses the push/pop groups as the hierarchy
+// (with a median-split tree inside large groups); `None` tests every primitive.
+enum class AccelKind { Groups, None };
+
+const char* accelKindName(AccelKind kind);
+
+class Accel {
+public:
+  virtual ~Accel() = default;
+
+  // Nearest hit with t inside `range`. `skip`, when given, is never reported: the
+  // flat polygon a secondary ray leaves cannot be hit again, and skipping it makes
+  // that guarantee exact rather than a matter of tolerance.
+  virtual bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                          Hit& hit) const = 0;
+  virtual bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const = 0;
+};
+
+std::unique_ptr<Accel> makeAccel(const Scene& scene, AccelKind kind);
+
+// The nearest intersection of one primitive, shared by every Accel.
+bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, Interval range,
+                        double& t);
+
+// The unit outward normal of a primitive at a point on it.
+Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point);
+
+} // namespace prism

@@ -1,0 +1,49 @@
+// The modeller's hierarchy: one node per push/pop group, bounding its own
+// primitives and its sub-groups. A group that lists many primitives directly
+// gets a median-split binary tree over them, so a flat file is not a flat list.
+#pragma once
+
+#include "core/accel.h"
+
+#include <vector>
+
+namespace prism {
+
+class GroupBvh final : public Accel {
+public:
+  explicit GroupBvh(const Scene& scene);
+
+  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                  Hit& hit) const override;
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override;
+
+  std::size_t nodeCount() const { return nodes_.size(); }
+
+private:
+  // A node bounds its primitives prims_[primBegin, +primCount) and its children
+  // children_[childBegin, +childCount) (indices into nodes_).
+  struct Node {
+    Aabb box;
+    std::uint32_t childBegin = 0, childCount = 0;
+    std::uint32_t primBegin = 0, primCount = 0;
+  };
+
+  std::uint32_t buildGroup(std::uint32_t group);
+  std::uint32_t addNode(const std::vector<std::uint32_t>& children,
+                        const std::vector<PrimitiveRef>& prims);
+  template <class T, class MakeLeaf>
+  std::uint32_t buildSplit(std::vector<std::pair<T, Aabb>>& items, std::size_t begin,
+                           std::size_t end, std::size_t leafSize, MakeLeaf makeLeaf);
+
+  template <bool AnyHit>
+  bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
+
+  const Scene& scene_;
+  std::vector<Node> nodes_;
+  std::vector<std::uint32_t> children_;
+  std::vector<PrimitiveRef> prims_;
+  std::uint32_t root_ = 0;
+  std::size_t stackNeed_ = 1; // traversal stack entries the deepest path can need
+};
+
+} // namespace prism

@@ -1,0 +1,103 @@
+#include "core/image_formation.h"
+
+#include <algorithm>
+
+namespace prism {
+
+namespace {
+
+// splitmix64: a small, well-mixed hash, so each (pixel, cell) has its own fixed
+// jitter whatever the order in which pixels are traced.
+std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+double unitFromBits(std::uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+double distanceSquared(const Rgb& a, const Rgb& b) {
+  const double dr = double(a.r) - double(b.r);
+  const double dg = double(a.g) - double(b.g);
+  const double db = double(a.b) - double(b.b);
+  return dr * dr + dg * dg + db * db;
+}
+
+Rgb toRgb(const Color& c) { return Rgb(float(c.r), float(c.g), float(c.b)); }
+
+} // namespace
+
+std::vector<Tile> makeTiles(int width, int height, int size) {
+  std::vector<Tile> tiles;
+  for (int y = 0; y < height; y += size)
+    for (int x = 0; x < width; x += size)
+      tiles.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
+  return tiles;
+}
+
+void tracePixelCentres(const Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
+                       RayCounts& counts) {
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      ++counts.eyePrimary;
+      const Rgb c = toRgb(tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts));
+      film.centre[film.index(x, y)] = c;
+      film.radiance[film.index(x, y)] = c;
+    }
+  }
+}
+
+double averageMax(const std::vector<Rgb>& radiance) {
+  if (radiance.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Rgb& c : radiance) sum += double(std::max({c.r, c.g, c.b}));
+  return sum / double(radiance.size());
+}
+
+bool needsSupersampling(const Film& film, int x, int y, double avgmax, double thresh) {
+  const double limit = avgmax * thresh;
+  const double limit2 = limit * limit;
+  const Rgb& c = film.centre[film.index(x, y)];
+  auto differs = [&](int nx, int ny) {
+    return distanceSquared(c, film.centre[film.index(nx, ny)]) > limit2;
+  };
+  return (x > 0 && differs(x - 1, y)) || (x + 1 < film.width && differs(x + 1, y)) ||
+         (y > 0 && differs(x, y - 1)) || (y + 1 < film.height && differs(x, y + 1));
+}
+
+Rgb supersamplePixel(const Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
+                     RayCounts& counts) {
+  Color sum(0.0);
+  const std::uint64_t pixelKey =
+      (std::uint64_t(std::uint32_t(y)) << 32) | std::uint64_t(std::uint32_t(x));
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      double u = 0.5, v = 0.5;
+      if (jitter) {
+        const std::uint64_t h = mix(pixelKey ^ mix(std::uint64_t(j * 4 + i)));
+        u = unitFromBits(h);
+        v = unitFromBits(mix(h));
+      }
+      ++counts.eyeAntialias;
+      sum += tracer.trace(camera.eyeRay(x + (i + u) / 4.0, y + (j + v) / 4.0), 1, counts);
+    }
+  }
+  return toRgb(sum / 16.0);
+}
+
+int antialiasTile(const Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
+                  double thresh, bool jitter, Film& film, RayCounts& counts) {
+  int supersampled = 0;
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      if (!needsSupersampling(film, x, y, avgmax, thresh)) continue;
+      film.radiance[film.index(x, y)] = supersamplePixel(tracer, camera, x, y, jitter, counts);
+      film.supersampled[film.index(x, y)] = 1;
+      ++supersampled;
+    }
+  }
+  return supersampled;
+}
+
+} // namespace prism

@@ -1,0 +1,44 @@
+// The passes of SPEC 2, each its own function so each can be tested and reused
+// by the progressive previewer: pixel centres, avgmax, the supersampling
+// decision, and the 4x4 supersampling itself. They work on tiles, the unit of
+// parallel work.
+#pragma once
+
+#include "core/camera.h"
+#include "core/film.h"
+#include "core/tracer.h"
+
+#include <vector>
+
+namespace prism {
+
+struct Tile {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0; // pixels [x0, x1) x [y0, y1)
+};
+
+// Row-major tiles of at most `size` x `size` pixels covering the image.
+std::vector<Tile> makeTiles(int width, int height, int size = 32);
+
+// Pass 1 over a tile: one eye ray through each pixel centre (ix + 0.5, iy + 0.5).
+void tracePixelCentres(const Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
+                       RayCounts& counts);
+
+// Mean over all pixels of max(r, g, b), summed in pixel order so the result is
+// the same for any thread count.
+double averageMax(const std::vector<Rgb>& radiance);
+
+// SPEC 2 step 2: true when some 4-neighbour's pass-1 colour differs by more than
+// avgmax * thresh in Euclidean RGB distance (strictly greater).
+bool needsSupersampling(const Film& film, int x, int y, double avgmax, double thresh);
+
+// The mean of 16 eye rays on a 4x4 grid of sub-pixel cells: cell centres, or a
+// point jittered within each cell (deterministic per pixel and cell).
+Rgb supersamplePixel(const Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
+                     RayCounts& counts);
+
+// Pass 2 over a tile: every pixel that needsSupersampling gets supersamplePixel;
+// the others keep their centre sample. Returns the number supersampled.
+int antialiasTile(const Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
+                  double thresh, bool jitter, Film& film, RayCounts& counts);
+
+} // namespace prism

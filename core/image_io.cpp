@@ -1,0 +1,81 @@
+#include "core/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+namespace prism {
+
+namespace {
+
+namespace fs = std::filesystem;
+using OIIO::TypeDesc;
+
+std::string lowerExtension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+void writeAtomically(const fs::path& path, int width, int height, TypeDesc type,
+                     const void* pixels) {
+  // Same directory (so rename is atomic) and same extension (OIIO picks the
+  // format by it); the leading dot hides it from casual listings meanwhile.
+  const fs::path temp = path.parent_path() / ("." + path.stem().string() + ".prism-" +
+                                              std::to_string(getpid()) + path.extension().string());
+  auto fail = [&](const std::string& why) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw std::runtime_error("cannot write '" + path.string() + "': " + why);
+  };
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (!out) fail(OIIO::geterror().empty() ? "unknown image format" : OIIO::geterror());
+  OIIO::ImageSpec spec(width, height, 3, type);
+  spec.attribute("compression", "zip");
+  spec.attribute("Software", "Prism");
+  if (!out->open(temp.string(), spec)) fail(out->geterror());
+  if (!out->write_image(type, pixels)) {
+    const std::string why = out->geterror();
+    out->close();
+    fail(why);
+  }
+  if (!out->close()) fail(out->geterror());
+  std::error_code error;
+  fs::rename(temp, path, error);
+  if (error) fail(error.message());
+}
+
+} // namespace
+
+void checkWritable(const fs::path& path) {
+  auto fail = [&](const std::string& why) {
+    throw std::runtime_error("cannot write '" + path.string() + "': " + why);
+  };
+  if (path.filename().empty()) fail("not a file name");
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code error;
+  if (!fs::is_directory(dir, error)) fail("no such directory '" + dir.string() + "'");
+  if (access(dir.c_str(), W_OK) != 0) fail("directory '" + dir.string() + "' is not writable");
+  if (!OIIO::ImageOutput::create(path.string())) {
+    OIIO::geterror(); // consume the message so it does not leak into a later error
+    fail("no image format for the extension '" + path.extension().string() + "'");
+  }
+}
+
+bool isFloatFormat(const fs::path& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".exr" || ext == ".hdr";
+}
+
+void writeImage8(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+  writeAtomically(path, width, height, TypeDesc::UINT8, rgb.data());
+}
+
+void writeImageFloat(const fs::path& path, int width, int height, const std::vector<Rgb>& radiance) {
+  writeAtomically(path, width, height, TypeDesc::FLOAT, radiance.data());
+}
+
+} // namespace prism

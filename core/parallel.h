@@ -1,0 +1,20 @@
+// Dynamic scheduling of independent work items over a fixed set of threads:
+// each worker takes the next unclaimed item, so uneven tiles balance out.
+// Results must not depend on which worker ran an item (they never do here:
+// items write disjoint pixels and keep per-worker ray counts).
+#pragma once
+
+#include <functional>
+
+namespace prism {
+
+// Resolves a requested thread count: 0 means every hardware thread.
+int resolveThreadCount(int requested);
+
+// Calls work(item, worker) for every item in [0, itemCount), worker in
+// [0, threads). Returns when all items are done or when `stop` returns true
+// (checked before each item).
+void parallelFor(int itemCount, int threads, const std::function<void(int item, int worker)>& work,
+                 const std::function<bool()>& stop = {});
+
+} // namespace prism

@@ -1,0 +1,32 @@
+// Rays actually traced, by kind (SPEC 3 and 1.6). Each render thread keeps its
+// own counts and they are summed at the end, so totals never depend on timing.
+#pragma once
+
+#include <cstdint>
+
+namespace prism {
+
+struct RayCounts {
+  std::uint64_t eyePrimary = 0;   // pass 1: one per pixel centre
+  std::uint64_t eyeAntialias = 0; // pass 2: sixteen per supersampled pixel
+  std::uint64_t shadow = 0;
+  std::uint64_t reflected = 0;
+  std::uint64_t transmitted = 0;
+  std::uint64_t tirEvents = 0; // total internal reflections (no ray traced)
+
+  std::uint64_t eye() const { return eyePrimary + eyeAntialias; }
+  std::uint64_t total() const { return eye() + shadow + reflected + transmitted; }
+
+  RayCounts& operator+=(const RayCounts& o) {
+    eyePrimary += o.eyePrimary;
+    eyeAntialias += o.eyeAntialias;
+    shadow += o.shadow;
+    reflected += o.reflected;
+    transmitted += o.transmitted;
+    tirEvents += o.tirEvents;
+    return *this;
+  }
+  bool operator==(const RayCounts&) const = default;
+};
+
+} // namespace prism

@@ -1,0 +1,57 @@
+#include "core/scene.h"
+
+#include "core/geometry.h"
+
+#include <filesystem>
+#include <sstream>
+
+namespace prism {
+
+Aabb Scene::bounds(PrimitiveRef ref) const {
+  switch (ref.kind) {
+  case PrimitiveKind::Sphere: return boundsOf(spheres[ref.index]);
+  case PrimitiveKind::Ellipsoid: return ellipsoids[ref.index].bounds;
+  case PrimitiveKind::Polygon: return boundsOf(polygons[ref.index], polygonVertices.data());
+  }
+  return {};
+}
+
+std::uint32_t Scene::materialIndex(PrimitiveRef ref) const {
+  switch (ref.kind) {
+  case PrimitiveKind::Sphere: return spheres[ref.index].material;
+  case PrimitiveKind::Ellipsoid: return ellipsoids[ref.index].material;
+  case PrimitiveKind::Polygon: return polygons[ref.index].material;
+  }
+  return 0;
+}
+
+Origin Scene::origin(PrimitiveRef ref) const {
+  switch (ref.kind) {
+  case PrimitiveKind::Sphere: return spheres[ref.index].origin;
+  case PrimitiveKind::Ellipsoid: return ellipsoids[ref.index].origin;
+  case PrimitiveKind::Polygon: return polygons[ref.index].origin;
+  }
+  return {};
+}
+
+std::string Scene::describe(PrimitiveRef ref) const {
+  static constexpr const char* kNames[] = {"sphere", "ellipsoid", "polygon"};
+  std::ostringstream text;
+  text << kNames[int(ref.kind)] << " #" << ref.index;
+  const Origin o = origin(ref);
+  if (o.file < files.size())
+    text << " (" << std::filesystem::path(files[o.file]).filename().string() << ":" << o.line << ")";
+  return text.str();
+}
+
+std::vector<PrimitiveRef> Scene::allPrimitives() const {
+  std::vector<PrimitiveRef> refs;
+  refs.reserve(primitiveCount());
+  for (std::uint32_t i = 0; i < spheres.size(); ++i) refs.push_back({PrimitiveKind::Sphere, i});
+  for (std::uint32_t i = 0; i < ellipsoids.size(); ++i)
+    refs.push_back({PrimitiveKind::Ellipsoid, i});
+  for (std::uint32_t i = 0; i < polygons.size(); ++i) refs.push_back({PrimitiveKind::Polygon, i});
+  return refs;
+}
+
+} // namespace prism

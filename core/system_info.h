@@ -1,0 +1,14 @@
+// Facts about the machine and the process that statistics report (SPEC 3).
+#pragma once
+
+#include <string>
+
+namespace prism {
+
+// "Intel(R) Xeon(R) ... (x86_64)": the CPU model and the architecture.
+std::string machineDescription();
+
+// User + system CPU time of the whole process (all threads) so far.
+double processCpuSeconds();
+
+} // namespace prism

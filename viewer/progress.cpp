@@ -1,0 +1,31 @@
+#include "progress.h"
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace prism {
+
+ProgressReporter::ProgressReporter(bool enabled)
+    : enabled_(enabled), terminal_(isatty(STDERR_FILENO) != 0) {}
+
+ProgressReporter::~ProgressReporter() {
+  if (printed_ && terminal_) std::fputs("\r\033[K", stderr);
+}
+
+void ProgressReporter::update(const RenderProgress& progress) {
+  if (!enabled_) return;
+  std::lock_guard lock(mutex_);
+  const auto now = Clock::now();
+  if (now - start_ < std::chrono::seconds(1)) return;
+  // A terminal line can be redrawn often; a log file gets a line every 5 s.
+  const auto interval = terminal_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000);
+  if (printed_ && now - lastPrint_ < interval) return;
+  lastPrint_ = now;
+  printed_ = true;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  std::fprintf(stderr, "%srendering: pass %d, %3.0f%% done, %.1f s%s", terminal_ ? "\r\033[K" : "",
+               progress.pass, 100.0 * progress.fraction, elapsed, terminal_ ? "" : "\n");
+  std::fflush(stderr);
+}
+
+} // namespace prism

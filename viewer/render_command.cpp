@@ -1,0 +1,141 @@
+#include "render_command.h"
+
+#include "progress.h"
+
+#include "core/exposure.h"
+#include "core/image_formation.h"
+#include "core/image_io.h"
+#include "core/parallel.h"
+#include "core/scene_parser.h"
+#include "core/stats.h"
+#include "core/system_info.h"
+#include "core/tracer.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace prism {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+int printPixelTree(const Scene& scene, const Accel& accel, const RenderSettings& settings, int x,
+                   int y) {
+  const Camera camera(scene.camera, settings.width, settings.height);
+  const Tracer tracer(scene, accel, settings.maxDepth);
+  RayCounts counts;
+  RayTreeNode root;
+  tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts, &root);
+  std::cout << "pixel (" << x << ", " << y << ") of " << settings.width << " x " << settings.height
+            << ", max depth " << settings.maxDepth << ": centre ray\n";
+  printRayTree(std::cout, root, scene);
+  std::cout << "rays: 1 eye, " << counts.shadow << " shadow, " << counts.reflected
+            << " reflected, " << counts.transmitted << " transmitted (" << counts.tirEvents
+            << " total internal reflections)\n";
+  return kExitOk;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write '" + path + "'");
+}
+
+} // namespace
+
+int runRenderCommand(const RenderCommandOptions& o) {
+  const auto loadStart = Clock::now();
+  Scene scene;
+  try {
+    scene = loadScene(o.scene);
+  } catch (const SceneError& error) {
+    for (const Diagnostic& d : error.diagnostics()) std::cerr << d.format() << "\n";
+    return kExitUsage;
+  }
+  const double loadSeconds = secondsSince(loadStart);
+
+  RenderSettings settings;
+  settings.width = o.size.empty() ? scene.width : o.size[0];
+  settings.height = o.size.empty() ? scene.height : o.size[1];
+  settings.maxDepth = o.depth.value_or(5);
+  settings.thresh = o.thresh;
+  settings.jitter = o.jitter;
+  settings.threads = resolveThreadCount(o.threads);
+
+  if (!o.pixel.empty() && (o.pixel[0] >= settings.width || o.pixel[1] >= settings.height)) {
+    std::cerr << "prism: error: --pixel " << o.pixel[0] << " " << o.pixel[1]
+              << " is outside the " << settings.width << " x " << settings.height << " image\n";
+    return kExitUsage;
+  }
+  try {
+    if (o.pixel.empty()) checkWritable(o.output);
+  } catch (const std::exception& error) {
+    std::cerr << "prism: error: " << error.what() << "\n";
+    return kExitFailure;
+  }
+
+  const auto buildStart = Clock::now();
+  const auto accel = makeAccel(scene, o.accel);
+  const double buildSeconds = secondsSince(buildStart);
+  if (!o.pixel.empty()) return printPixelTree(scene, *accel, settings, o.pixel[0], o.pixel[1]);
+
+  RenderStats stats;
+  const double cpuStart = processCpuSeconds();
+  const auto renderStart = Clock::now();
+  RenderResult result;
+  {
+    ProgressReporter reporter(!o.quiet);
+    result = render(scene, *accel, settings,
+                    [&](const RenderProgress& p) { reporter.update(p); });
+  }
+  stats.wallSeconds = secondsSince(renderStart);
+  stats.cpuSeconds = processCpuSeconds() - cpuStart;
+
+  try {
+    if (isFloatFormat(o.output) || o.floatTiff) {
+      writeImageFloat(o.output, settings.width, settings.height, result.film.radiance);
+    } else {
+      writeImage8(o.output, settings.width, settings.height,
+                  exposeImage(result.film.radiance, exposureScale(result.avgmax)));
+    }
+  } catch (const std::exception& error) {
+    std::cerr << "prism: error: " << error.what() << "\n";
+    return kExitFailure;
+  }
+
+  stats.scene = o.scene;
+  stats.machine = machineDescription();
+  stats.accel = accelKindName(o.accel);
+  stats.width = settings.width;
+  stats.height = settings.height;
+  stats.maxDepth = settings.maxDepth;
+  stats.thresh = settings.thresh;
+  stats.jitter = settings.jitter;
+  stats.threads = settings.threads;
+  stats.primitives = scene.primitiveCount();
+  stats.loadSeconds = loadSeconds;
+  stats.buildSeconds = buildSeconds;
+  stats.counts = result.counts;
+  stats.supersampledPixels = result.supersampledPixels;
+  stats.avgmax = result.avgmax;
+  if (!o.quiet) std::cerr << formatStatsText(stats);
+  if (!o.statsJson.empty()) {
+    try {
+      writeText(o.statsJson, formatStatsJson(stats));
+    } catch (const std::exception& error) {
+      std::cerr << "prism: error: " << error.what() << "\n";
+      return kExitFailure;
+    }
+  }
+  return kExitOk;
+}
+
+} // namespace prism

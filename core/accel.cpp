@@ -47,11 +47,7 @@ public:
     for (const PrimitiveRef& ref : refs_) {
       if (skip != nullptr && ref == *skip) continue;
       double t;
-      if (intersectPrimitive(scene_, ref, ray, range, t)) {
-        range.max = t;
-        hit = {t, ref};
-        found = true;
-      }
+      if (intersectPrimitive(scene_, ref, ray, range, t)) keepNearest({t, ref}, found, hit, range);
     }
     return found;
   }

@@ -5,6 +5,8 @@
 
 #include "core/scene.h"
 
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -14,6 +16,19 @@ struct Hit {
   double t = 0.0;
   PrimitiveRef primitive;
 };
+
+// Offers a candidate hit to the nearest one found so far (`found` says whether
+// there is one) and narrows `range` so later candidates must be at least as near.
+// Ties go to the smaller PrimitiveRef: the answer never depends on visiting order.
+inline void keepNearest(const Hit& candidate, bool& found, Hit& nearest, Interval& range) {
+  if (!found || candidate.t < nearest.t ||
+      (candidate.t == nearest.t && candidate.primitive < nearest.primitive)) {
+    nearest = candidate;
+    found = true;
+  }
+  // Still accept hits at exactly nearest.t, for the tie-break above.
+  range.max = std::nextafter(nearest.t, std::numeric_limits<double>::infinity());
+}
 
 // How rays find primitives. `Groups` uses the push/pop groups as the hierarchy
 // (with a median-split tree inside large groups); `None` tests every primitive.

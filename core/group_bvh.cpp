@@ -122,9 +122,7 @@ bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip
       double t;
       if (intersectPrimitive(scene_, ref, ray, range, t)) {
         if constexpr (AnyHit) return true;
-        range.max = t;
-        *hit = {t, ref};
-        found = true;
+        keepNearest({t, ref}, found, *hit, range);
       }
     }
     for (std::uint32_t i = 0; i < node.childCount; ++i) stack[top++] = children_[node.childBegin + i];

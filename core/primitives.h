@@ -16,6 +16,11 @@ struct PrimitiveRef {
   std::uint32_t index = 0;
 
   bool operator==(const PrimitiveRef&) const = default;
+  // Orders hits at exactly the same distance (coincident surfaces), so every
+  // acceleration structure picks the same one whatever order it visits them in.
+  bool operator<(const PrimitiveRef& o) const {
+    return kind != o.kind ? kind < o.kind : index < o.index;
+  }
 };
 
 // Where a primitive was written: index into Scene::files and 1-based line.

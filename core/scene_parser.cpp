@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 
 namespace prism {
 
@@ -93,7 +94,8 @@ bool overflows(std::string_view body, bool hex) {
   long long exponent = 0;
   bool negativeExponent = false;
   if (++i < body.size() && (body[i] == '+' || body[i] == '-')) negativeExponent = body[i++] == '-';
-  for (; i < body.size(); ++i) exponent = std::min(exponent * 10 + (body[i] - '0'), 1'000'000'000'000LL);
+  for (; i < body.size(); ++i)
+    exponent = std::min(exponent * 10 + (body[i] - '0'), 1'000'000'000'000LL);
   if (negativeExponent) exponent = -exponent;
   const long long digitScale = hex ? 4 : 1; // hex digits are 4 binary orders, 'p' counts in 2s
   return (order - 1) * digitScale + exponent > 0;
@@ -153,7 +155,8 @@ std::string quoted(std::string_view text) {
   bool shortened = false;
   if (text.size() > kMaxShown) {
     std::size_t cut = kMaxShown;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut; // UTF-8
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+      --cut; // UTF-8
     text = text.substr(0, cut);
     shortened = true;
   }
@@ -255,7 +258,8 @@ private:
       end = close == std::string_view::npos ? text_.size()
                                             : (text_[close] == '"' ? close + 1 : close);
     } else {
-      while (end < text_.size() && !isSpace(text_[end]) && text_[end] != '#') ++end;
+      while (end < text_.size() && !isSpace(text_[end]) && text_[end] != '#')
+        ++end;
     }
     token.text = text_.substr(start, end - start);
     position_.offset = end;
@@ -282,7 +286,7 @@ std::optional<std::string> readFile(const fs::path& path, bool regularOnly, std:
   }
   errno = 0;
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                              &std::fclose);
+                                                             &std::fclose);
   if (!file) return std::strerror(errno != 0 ? errno : ENOENT);
   std::array<char, 1 << 16> buffer;
   while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), file.get())) {
@@ -327,8 +331,8 @@ struct Arg {
 // One command being parsed.
 struct Command {
   Token keyword;
-  std::string name;   // the keyword, for messages
-  bool valid = true;  // false once an argument broke a constraint: not applied
+  std::string name;  // the keyword, for messages
+  bool valid = true; // false once an argument broke a constraint: not applied
 };
 
 Vec3 vec(const Arg* a) { return Vec3(a[0].value, a[1].value, a[2].value); }
@@ -338,7 +342,8 @@ Vec3 vec(const Arg* a) { return Vec3(a[0].value, a[1].value, a[2].value); }
 // determinant itself can underflow to zero for tiny scales.
 bool mirrors(const Transform& t) {
   Mat3 m = t.linear();
-  for (int i = 0; i < 3; ++i) m[i] /= glm::length(m[i]);
+  for (int i = 0; i < 3; ++i)
+    m[i] /= glm::length(m[i]);
   return glm::determinant(m) < 0.0;
 }
 
@@ -350,6 +355,32 @@ template <int N> bool allFinite(const glm::mat<N, N, double>& m) {
   }
   return true;
 }
+
+using MaterialKey = std::array<double, 8>;
+
+MaterialKey keyOf(const Material& m) {
+  return {m.color.r, m.color.g, m.color.b, m.kdr, m.ksr, m.kst, m.e, m.ir};
+}
+
+// Agrees with the == of MaterialKey, which takes -0 and 0 as equal.
+struct MaterialKeyHash {
+  std::size_t operator()(const MaterialKey& key) const {
+    std::uint64_t h = 0;
+    for (const double v : key) {
+      std::uint64_t bits = 0;
+      const double positiveZero = v + 0.0; // -0 + 0 is +0
+      std::memcpy(&bits, &positiveZero, sizeof bits);
+      h = mix(h ^ bits);
+    }
+    return std::size_t(h);
+  }
+  // The splitmix64 finaliser: every input bit affects every output bit.
+  static std::uint64_t mix(std::uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+};
 
 class Parser {
 public:
@@ -449,7 +480,7 @@ private:
 
   Material material_;
   std::optional<std::uint32_t> materialIndex_; // material_ interned, once a primitive used it
-  std::map<std::array<double, 8>, std::uint32_t> materialIds_;
+  std::unordered_map<MaterialKey, std::uint32_t, MaterialKeyHash> materialIds_;
   Transform transform_;
   std::uint32_t group_ = 0;
   std::vector<Saved> saved_;
@@ -460,7 +491,7 @@ private:
   std::size_t parsedBytes_ = 0;
 
   std::map<std::string, Location> firstGiven_; // commands allowed once, by name
-  bool cameraBroken_ = false; // an eye/lookat/up was rejected: skip the camera checks
+  bool cameraBroken_ = false;  // an eye/lookat/up was rejected: skip the camera checks
   std::vector<Vec3> vertices_; // scratch for polygon
 };
 
@@ -505,9 +536,10 @@ Scene Parser::run(std::string_view text, const std::string& name) {
 
 void Parser::parseFile(std::string_view text, const std::string& name, const fs::path& identity,
                        std::uint32_t index) {
-  files_.push_back(std::make_unique<SourceFile>(
-      SourceFile{name, identity, index, Lexer(text), saved_.size()}));
-  while (!file().lexer.peek().atEnd()) command();
+  files_.push_back(
+      std::make_unique<SourceFile>(SourceFile{name, identity, index, Lexer(text), saved_.size()}));
+  while (!file().lexer.peek().atEnd())
+    command();
   closeOpenPushes();
   files_.pop_back();
 }
@@ -524,7 +556,8 @@ void Parser::command() {
                      " (too many numbers for the command before it?)");
   } else {
     std::string lower(token.text);
-    for (char& ch : lower) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    for (char& ch : lower)
+      ch = char(std::tolower(static_cast<unsigned char>(ch)));
     const bool caseOnly = handlerFor(lower) != nullptr;
     error(token, "unknown keyword " + quoted(token.text) +
                      (caseOnly ? " (keywords are lower case: '" + lower + "')" : ""));
@@ -567,7 +600,8 @@ void Parser::resync() {
 
 void Parser::skipNumbers() {
   Lexer& lexer = file().lexer;
-  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text)) lexer.next();
+  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text))
+    lexer.next();
 }
 
 // ---------------------------------------------------------------------------
@@ -591,8 +625,8 @@ bool Parser::argumentToken(Command& c, const char* name, const char* kind, Token
 bool Parser::number(Command& c, const char* name, Arg& out) {
   if (!argumentToken(c, name, "a number", out.token)) return false;
   if (parseNumber(out.token.text, out.value) == NumberKind::NonFinite) {
-    invalid(c, out.token, std::string(name) + " is not a finite number (" +
-                              quoted(out.token.text) + ")");
+    invalid(c, out.token,
+            std::string(name) + " is not a finite number (" + quoted(out.token.text) + ")");
   }
   return true;
 }
@@ -605,7 +639,8 @@ void Parser::requireNonNegative(Command& c, const Arg& a, const char* name) {
 
 void Parser::requireColor(Command& c, const Arg* rgb) {
   static constexpr const char* kNames[] = {"R", "G", "B"};
-  for (int i = 0; i < 3; ++i) requireNonNegative(c, rgb[i], kNames[i]);
+  for (int i = 0; i < 3; ++i)
+    requireNonNegative(c, rgb[i], kNames[i]);
 }
 
 // Camera and image commands may be given once in the whole scene.
@@ -613,7 +648,8 @@ bool Parser::once(Command& c) {
   const Location here{file().name, c.keyword.line, c.keyword.column};
   const auto [first, inserted] = firstGiven_.try_emplace(c.name, here);
   if (!inserted) {
-    invalid(c, c.keyword, "duplicate '" + c.name + "' (first given at " + first->second.text() + ")");
+    c.valid = false;
+    error(c.keyword, "duplicate '" + c.name + "' (first given at " + first->second.text() + ")");
   }
   return inserted;
 }
@@ -651,10 +687,12 @@ void Parser::resolution(Command& c) {
     Token token;
     if (!argumentToken(c, kNames[i], "an integer", token)) return;
     const std::optional<std::uint64_t> value = parseInteger(token.text);
-    if (!value || *value < std::uint64_t(kMinResolution) || *value > std::uint64_t(kMaxResolution)) {
+    if (!value || *value < std::uint64_t(kMinResolution) ||
+        *value > std::uint64_t(kMaxResolution)) {
       invalid(c, token,
-              std::string(kNames[i]) + " must be an integer from " + std::to_string(kMinResolution) +
-                  " to " + std::to_string(kMaxResolution) + ", found " + quoted(token.text));
+              std::string(kNames[i]) + " must be an integer from " +
+                  std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) +
+                  ", found " + quoted(token.text));
     } else {
       size[i] = int(*value);
     }
@@ -689,8 +727,10 @@ void Parser::surface(Command& c) {
   static constexpr const char* kNames[] = {"R", "G", "B", "KDR", "KSR", "KST", "E", "IR"};
   Arg a[8];
   if (!numbers(c, kNames, a)) return;
-  for (int i = 0; i < 7; ++i) requireNonNegative(c, a[i], kNames[i]);
-  if (!(a[7].value > 0.0)) invalid(c, a[7].token, "IR must be positive, found " + quoted(a[7].token.text));
+  for (int i = 0; i < 7; ++i)
+    requireNonNegative(c, a[i], kNames[i]);
+  if (!(a[7].value > 0.0))
+    invalid(c, a[7].token, "IR must be positive, found " + quoted(a[7].token.text));
   if (!c.valid) return;
   material_ = Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value};
   materialIndex_.reset();
@@ -702,12 +742,9 @@ void Parser::surface(Command& c) {
 // Interns the current material on first use: identical materials share one entry.
 std::uint32_t Parser::currentMaterial() {
   if (materialIndex_) return *materialIndex_;
-  const Material& m = material_;
-  const std::array<double, 8> key = {m.color.r, m.color.g, m.color.b, m.kdr,
-                                     m.ksr,     m.kst,     m.e,         m.ir};
   const auto [it, inserted] =
-      materialIds_.try_emplace(key, std::uint32_t(scene_.materials.size()));
-  if (inserted) scene_.materials.push_back(m);
+      materialIds_.try_emplace(keyOf(material_), std::uint32_t(scene_.materials.size()));
+  if (inserted) scene_.materials.push_back(material_);
   materialIndex_ = it->second;
   return it->second;
 }
@@ -771,8 +808,8 @@ void Parser::polygon(Command& c) {
     double value = 0.0;
     const NumberKind kind = token.atEnd() ? NumberKind::NotANumber : parseNumber(token.text, value);
     if (kind == NumberKind::NotANumber) {
-      const std::string expected = "polygon: expected " + std::to_string(wanted) +
-                                   " numbers for " + std::to_string(*count) + " vertices, found " +
+      const std::string expected = "polygon: expected " + std::to_string(wanted) + " numbers for " +
+                                   std::to_string(*count) + " vertices, found " +
                                    std::to_string(found);
       if (token.atEnd()) {
         error(c.keyword, expected + " before the end of the file");
@@ -861,8 +898,8 @@ void Parser::scale(Command& c) {
   if (!numbers(c, kNames, a)) return;
   for (int i = 0; i < 3; ++i) {
     if (a[i].value == 0.0) {
-      invalid(c, a[i].token, std::string(kNames[i]) + " must not be zero, found " +
-                                 quoted(a[i].token.text));
+      invalid(c, a[i].token,
+              std::string(kNames[i]) + " must not be zero, found " + quoted(a[i].token.text));
     }
   }
   if (c.valid) compose(c, Transform::scale(vec(a)));
@@ -928,14 +965,14 @@ void Parser::include(Command& c) {
   for (std::size_t i = 0; i < files_.size(); ++i) {
     if (files_[i]->identity != identity) continue;
     std::string cycle = "include cycle: ";
-    for (std::size_t j = i; j < files_.size(); ++j) cycle += files_[j]->name + " -> ";
+    for (std::size_t j = i; j < files_.size(); ++j)
+      cycle += files_[j]->name + " -> ";
     error(token, cycle + name);
     skipNumbers();
     return;
   }
   if (files_.size() >= kMaxIncludeDepth) {
-    error(token, "include: files nested more than " + std::to_string(kMaxIncludeDepth) +
-                     " deep");
+    error(token, "include: files nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
     skipNumbers();
     return;
   }

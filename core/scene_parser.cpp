@@ -94,8 +94,9 @@ bool overflows(std::string_view body, bool hex) {
   long long exponent = 0;
   bool negativeExponent = false;
   if (++i < body.size() && (body[i] == '+' || body[i] == '-')) negativeExponent = body[i++] == '-';
-  for (; i < body.size(); ++i)
+  for (; i < body.size(); ++i) {
     exponent = std::min(exponent * 10 + (body[i] - '0'), 1'000'000'000'000LL);
+  }
   if (negativeExponent) exponent = -exponent;
   const long long digitScale = hex ? 4 : 1; // hex digits are 4 binary orders, 'p' counts in 2s
   return (order - 1) * digitScale + exponent > 0;
@@ -155,8 +156,9 @@ std::string quoted(std::string_view text) {
   bool shortened = false;
   if (text.size() > kMaxShown) {
     std::size_t cut = kMaxShown;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
-      --cut; // UTF-8
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) {
+      --cut; // not inside a UTF-8 sequence
+    }
     text = text.substr(0, cut);
     shortened = true;
   }
@@ -194,7 +196,10 @@ bool isSpace(char c) {
 // with one token of lookahead.
 class Lexer {
 public:
-  explicit Lexer(std::string_view text) : text_(text) {}
+  explicit Lexer(std::string_view text) : text_(text) {
+    // Some editors start UTF-8 files with a byte order mark; columns count after it.
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") position_.offset = position_.lineStart = 3;
+  }
 
   const Token& peek() {
     if (!peeked_) {
@@ -258,8 +263,9 @@ private:
       end = close == std::string_view::npos ? text_.size()
                                             : (text_[close] == '"' ? close + 1 : close);
     } else {
-      while (end < text_.size() && !isSpace(text_[end]) && text_[end] != '#')
+      while (end < text_.size() && !isSpace(text_[end]) && text_[end] != '#') {
         ++end;
+      }
     }
     token.text = text_.substr(start, end - start);
     position_.offset = end;
@@ -342,8 +348,9 @@ Vec3 vec(const Arg* a) { return Vec3(a[0].value, a[1].value, a[2].value); }
 // determinant itself can underflow to zero for tiny scales.
 bool mirrors(const Transform& t) {
   Mat3 m = t.linear();
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
     m[i] /= glm::length(m[i]);
+  }
   return glm::determinant(m) < 0.0;
 }
 
@@ -472,7 +479,8 @@ private:
   std::uint32_t currentMaterial();
   void addPrimitive(PrimitiveKind kind, std::size_t index);
   void compose(Command& c, const Transform& t);
-  std::optional<std::string> readInclude(const fs::path& path, const std::string*& text);
+  std::optional<std::string> readInclude(const fs::path& path, const fs::path& identity,
+                                         const std::string*& text);
   std::uint32_t fileIndex(const fs::path& identity, const std::string& name);
 
   Scene scene_;
@@ -538,8 +546,9 @@ void Parser::parseFile(std::string_view text, const std::string& name, const fs:
                        std::uint32_t index) {
   files_.push_back(
       std::make_unique<SourceFile>(SourceFile{name, identity, index, Lexer(text), saved_.size()}));
-  while (!file().lexer.peek().atEnd())
+  while (!file().lexer.peek().atEnd()) {
     command();
+  }
   closeOpenPushes();
   files_.pop_back();
 }
@@ -556,8 +565,9 @@ void Parser::command() {
                      " (too many numbers for the command before it?)");
   } else {
     std::string lower(token.text);
-    for (char& ch : lower)
+    for (char& ch : lower) {
       ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    }
     const bool caseOnly = handlerFor(lower) != nullptr;
     error(token, "unknown keyword " + quoted(token.text) +
                      (caseOnly ? " (keywords are lower case: '" + lower + "')" : ""));
@@ -600,8 +610,9 @@ void Parser::resync() {
 
 void Parser::skipNumbers() {
   Lexer& lexer = file().lexer;
-  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text))
+  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text)) {
     lexer.next();
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -627,6 +638,8 @@ bool Parser::number(Command& c, const char* name, Arg& out) {
   if (parseNumber(out.token.text, out.value) == NumberKind::NonFinite) {
     invalid(c, out.token,
             std::string(name) + " is not a finite number (" + quoted(out.token.text) + ")");
+    // NaN fails every later range check silently: one message per bad argument.
+    out.value = std::numeric_limits<double>::quiet_NaN();
   }
   return true;
 }
@@ -639,8 +652,9 @@ void Parser::requireNonNegative(Command& c, const Arg& a, const char* name) {
 
 void Parser::requireColor(Command& c, const Arg* rgb) {
   static constexpr const char* kNames[] = {"R", "G", "B"};
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
     requireNonNegative(c, rgb[i], kNames[i]);
+  }
 }
 
 // Camera and image commands may be given once in the whole scene.
@@ -727,10 +741,12 @@ void Parser::surface(Command& c) {
   static constexpr const char* kNames[] = {"R", "G", "B", "KDR", "KSR", "KST", "E", "IR"};
   Arg a[8];
   if (!numbers(c, kNames, a)) return;
-  for (int i = 0; i < 7; ++i)
+  for (int i = 0; i < 7; ++i) {
     requireNonNegative(c, a[i], kNames[i]);
-  if (!(a[7].value > 0.0))
+  }
+  if (a[7].value <= 0.0) {
     invalid(c, a[7].token, "IR must be positive, found " + quoted(a[7].token.text));
+  }
   if (!c.valid) return;
   material_ = Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value};
   materialIndex_.reset();
@@ -764,12 +780,12 @@ void Parser::sphere(Command& c) {
   const Vec3 center = transform_.point(vec(a));
   double s = 1.0;
   if (transform_.isSimilarity(&s)) {
-    const Sphere sphere{center, r.value * s, currentMaterial(), origin(c)};
-    if (!isFinite(center) || !std::isfinite(sphere.radius) || !(sphere.radius > 0.0)) {
+    const double radius = r.value * s;
+    if (!isFinite(center) || !std::isfinite(radius) || !(radius > 0.0)) {
       error(c.keyword, "sphere: too large or too small after the current transform");
       return;
     }
-    scene_.spheres.push_back(sphere);
+    scene_.spheres.push_back({center, radius, currentMaterial(), origin(c)});
     addPrimitive(PrimitiveKind::Sphere, scene_.spheres.size() - 1);
     return;
   }
@@ -926,8 +942,8 @@ std::uint32_t Parser::fileIndex(const fs::path& identity, const std::string& nam
 }
 
 // The contents of an included file, read at most once per scene.
-std::optional<std::string> Parser::readInclude(const fs::path& path, const std::string*& text) {
-  const fs::path identity = identityOf(path);
+std::optional<std::string> Parser::readInclude(const fs::path& path, const fs::path& identity,
+                                               const std::string*& text) {
   if (const auto it = contents_.find(identity); it != contents_.end()) {
     text = &it->second;
     return std::nullopt;
@@ -965,8 +981,9 @@ void Parser::include(Command& c) {
   for (std::size_t i = 0; i < files_.size(); ++i) {
     if (files_[i]->identity != identity) continue;
     std::string cycle = "include cycle: ";
-    for (std::size_t j = i; j < files_.size(); ++j)
+    for (std::size_t j = i; j < files_.size(); ++j) {
       cycle += files_[j]->name + " -> ";
+    }
     error(token, cycle + name);
     skipNumbers();
     return;
@@ -977,7 +994,7 @@ void Parser::include(Command& c) {
     return;
   }
   const std::string* text = nullptr;
-  if (const std::optional<std::string> problem = readInclude(path, text)) {
+  if (const std::optional<std::string> problem = readInclude(path, identity, text)) {
     error(token, "cannot read '" + name + "': " + *problem);
     skipNumbers();
     return;

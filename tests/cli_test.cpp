@@ -1,0 +1,201 @@
+// The prism program as users run it: exit codes (SPEC 5), located scene errors,
+// no partial output file, the written image and statistics.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("prism_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+            "_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CommandResult prism(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = std::string("'") + PRISM_BINARY + "' " + args + " >'" +
+                                out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    CommandResult run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = slurp(out);
+    run.err = slurp(err);
+    return run;
+  }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+
+  std::string scene(const std::string& name) {
+    return std::string(PRISM_SOURCE_DIR) + "/scenes/" + name;
+  }
+
+  fs::path dir_;
+};
+
+const char* kSmallScene = R"(eye 0 0 4
+lookat 0 0 0
+light 2 3 4 30 30 30
+surface 1 0.5 0.2 0.8 0.2 0 20 1
+sphere 0 0 0 1
+)";
+
+TEST_F(Cli, HelpAndVersionSucceed) {
+  const CommandResult help = prism("--help");
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("render"), std::string::npos);
+  const CommandResult renderHelp = prism("render --help");
+  EXPECT_EQ(renderHelp.exitCode, 0);
+  EXPECT_NE(renderHelp.out.find("--thresh"), std::string::npos);
+  const CommandResult version = prism("--version");
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_NE(version.out.find("prism "), std::string::npos);
+}
+
+TEST_F(Cli, UsageErrorsExitWith2) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const std::string out = (dir_ / "o.tiff").string();
+  EXPECT_EQ(prism("").exitCode, 2);
+  EXPECT_EQ(prism("render " + s).exitCode, 2); // no -o
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --depth 0").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh 1.5").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh -0.1").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --size 0 10").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --accel fast").exitCode, 2);
+  EXPECT_EQ(prism("render " + (dir_ / "missing.sc").string() + " -o " + out).exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " --pixel 600 0").exitCode, 2); // default size 512
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, SceneErrorsAreLocatedAndLeaveNoOutput) {
+  const fs::path bad = write("bad.sc", "eye 0 0 4\nsphere 0 0 0 -1\nlight 1 2\n");
+  const fs::path out = dir_ / "bad.tiff";
+  const CommandResult run = prism("render " + bad.string() + " -o " + out.string());
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find(bad.string() + ":2:14: error:"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(bad.string() + ":3:"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out));
+  // Nothing else was left in the directory either (no temporary file).
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_TRUE(entry.path().extension() != ".tiff") << entry.path();
+}
+
+TEST_F(Cli, UnwritableOutputExitsWith1BeforeRendering) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const CommandResult run = prism("render " + s + " -o " + (dir_ / "no/such/dir/x.tiff").string());
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("no such directory"), std::string::npos) << run.err;
+  const CommandResult format = prism("render " + s + " -o " + (dir_ / "x.unknownformat").string());
+  EXPECT_EQ(format.exitCode, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "x.unknownformat"));
+}
+
+TEST_F(Cli, WritesAn8BitRgbTiffAndJsonStatistics) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "o.tiff", json = dir_ / "stats.json";
+  const CommandResult run = prism("render " + s + " -o " + out.string() + " --size 40 30 --depth 3 --thresh 0.2 " +
+                        "--stats-json " + json.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.err.find("rays per pixel"), std::string::npos);
+  EXPECT_NE(run.err.find("machine"), std::string::npos);
+
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(spec.width, 40);
+  EXPECT_EQ(spec.height, 30);
+  EXPECT_EQ(spec.nchannels, 3);
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
+  EXPECT_EQ(std::string(in->format_name()), "tiff");
+  std::vector<unsigned char> pixels(40 * 30 * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+  const auto stats = nlohmann::json::parse(slurp(json));
+  // The same render as float radiance, exposed by hand with SPEC 2 step 3:
+  // min(255, round(radiance * 128 / avgmax)) must give the bytes of the TIFF.
+  const fs::path exr = dir_ / "o.exr";
+  ASSERT_EQ(prism("render " + s + " -o " + exr.string() + " --size 40 30 --depth 3 --thresh 0.2 -q")
+                .exitCode,
+            0);
+  auto raw = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(raw);
+  std::vector<float> radiance(40 * 30 * 3);
+  ASSERT_TRUE(raw->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, radiance.data()));
+  const double scale = 128.0 / stats["avgmax"].get<double>();
+  std::size_t exact = 0, clipped = 0;
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    const double expected = std::min(255.0, std::round(double(radiance[i]) * scale));
+    EXPECT_NEAR(double(pixels[i]), expected, 1.0) << "channel " << i;
+    exact += double(pixels[i]) == expected;
+    clipped += pixels[i] == 255;
+  }
+  EXPECT_GE(double(exact), 0.99 * double(pixels.size()));
+  EXPECT_GT(clipped, 0u); // the lit sphere on black is brighter than avgmax: it pegs
+  EXPECT_EQ(stats["width"], 40);
+  EXPECT_EQ(stats["pixels"], 1200);
+  EXPECT_EQ(stats["max_depth"], 3);
+  EXPECT_DOUBLE_EQ(stats["thresh"].get<double>(), 0.2);
+  EXPECT_EQ(stats["rays"]["eye_pass1"], 1200);
+  EXPECT_GT(stats["cpu_seconds"].get<double>(), 0.0);
+}
+
+TEST_F(Cli, ExrKeepsFloatRadiance) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "o.exr";
+  ASSERT_EQ(prism("render " + s + " -o " + out.string() + " --size 16 16 -q").exitCode, 0);
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in);
+  EXPECT_TRUE(in->spec().format == OIIO::TypeDesc::FLOAT || in->spec().format == OIIO::TypeDesc::HALF);
+}
+
+TEST_F(Cli, PixelPrintsTheRayTree) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const CommandResult run = prism("render " + s + " --size 21 21 --pixel 10 10");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("eye ray, depth 1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("hits sphere #0 (s.sc:5)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("entering"), std::string::npos);
+  EXPECT_NE(run.out.find("light 1:"), std::string::npos);
+  EXPECT_NE(run.out.find("reflected ray, depth 2"), std::string::npos) << run.out;
+}
+
+TEST_F(Cli, RendersEveryShippedScene) {
+  for (const char* name : {"table.sc", "glass.sc", "chex.sc", "tree.sc"}) {
+    const fs::path out = dir_ / (std::string(name) + ".png");
+    const CommandResult run = prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");
+    EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
+    EXPECT_TRUE(fs::exists(out)) << name;
+  }
+}
+
+} // namespace

@@ -178,6 +178,19 @@ TEST_F(Cli, ExrKeepsFloatRadiance) {
   EXPECT_TRUE(in->spec().format == OIIO::TypeDesc::FLOAT || in->spec().format == OIIO::TypeDesc::HALF);
 }
 
+TEST_F(Cli, FloatFlagWritesRadianceTiff) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "radiance.tif";
+  ASSERT_EQ(prism("render " + s + " -o " + out.string() + " --size 16 16 --float -q").exitCode, 0);
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::FLOAT);
+  std::vector<float> radiance(16 * 16 * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, radiance.data()));
+  // Radiance is not clamped: the lit sphere is brighter than 1 somewhere.
+  EXPECT_GT(*std::max_element(radiance.begin(), radiance.end()), 1.0f);
+}
+
 TEST_F(Cli, PixelPrintsTheRayTree) {
   const std::string s = write("s.sc", kSmallScene).string();
   const CommandResult run = prism("render " + s + " --size 21 21 --pixel 10 10");
@@ -196,6 +209,13 @@ TEST_F(Cli, RendersEveryShippedScene) {
     EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
     EXPECT_TRUE(fs::exists(out)) << name;
   }
+}
+
+TEST_F(Cli, TreeGeneratorReproducesTheCommittedTree) {
+  const fs::path generated = dir_ / "tree.sc";
+  const std::string command = std::string("'") + PRISM_TREE_GEN + "' '" + generated.string() + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_EQ(slurp(generated), slurp(scene("tree.sc")));
 }
 
 } // namespace

@@ -1,5 +1,9 @@
 #include "core/parallel.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <thread>
 #include <vector>
@@ -10,6 +14,15 @@ int resolveThreadCount(int requested) {
   if (requested > 0) return requested;
   const unsigned hardware = std::thread::hardware_concurrency();
   return hardware > 0 ? int(hardware) : 1;
+}
+
+void lowerCurrentThreadPriority() {
+  thread_local bool lowered = false;
+  if (lowered) return;
+  lowered = true;
+  // On Linux a nice value applies to the thread whose id is given.
+  const auto tid = static_cast<id_t>(syscall(SYS_gettid));
+  setpriority(PRIO_PROCESS, tid, 10);
 }
 
 void parallelFor(int itemCount, int threads, const std::function<void(int, int)>& work,

@@ -11,6 +11,11 @@ namespace prism {
 // Resolves a requested thread count: 0 means every hardware thread.
 int resolveThreadCount(int requested);
 
+// Makes the calling thread yield to interactive threads (a previewer's UI):
+// render workers call it so a busy machine still redraws the window on time.
+// Idempotent; best effort (does nothing where the system refuses).
+void lowerCurrentThreadPriority();
+
 // Calls work(item, worker) for every item in [0, itemCount), worker in
 // [0, threads). Returns when all items are done or when `stop` returns true
 // (checked before each item).

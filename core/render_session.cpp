@@ -1,0 +1,307 @@
+#include "core/render_session.h"
+
+#include "core/image_formation.h"
+#include "core/parallel.h"
+#include "core/tracer.h"
+
+#include <condition_variable>
+
+namespace prism {
+
+namespace {
+
+constexpr int kCoarsestLevel = 8; // block side of the first preview level
+constexpr std::uint8_t kNoSample = 255;
+
+using Clock = std::chrono::steady_clock;
+
+// One pixel-centre sample waiting to be published.
+struct Sample {
+  std::size_t index;
+  Rgb radiance;
+};
+
+} // namespace
+
+bool isNewAtLevel(int x, int y, int level) {
+  if (x % level != 0 || y % level != 0) return false;
+  return level == kCoarsestLevel || x % (2 * level) != 0 || y % (2 * level) != 0;
+}
+
+struct RenderSession::Work {
+  Work(int w, int h)
+      : film(w, h), display(film.pixelCount(), Rgb(0.0f)),
+        displayLevel(film.pixelCount(), kNoSample) {}
+
+  Film film;                              // the samples of the final picture
+  std::vector<Rgb> display;               // each pixel shows its nearest sample so far
+  std::vector<std::uint8_t> displayLevel; // block size of the sample shown; kNoSample: stale
+  SessionPhase phase = SessionPhase::Coarse;
+  int level = kCoarsestLevel;
+  double sumMax = 0.0; // of max(r,g,b) over traced pixel centres
+  long long pass1Pixels = 0;
+  double avgmax = 0.0;
+  long long supersampled = 0;
+  long long pass2TilesDone = 0;
+  long long tileCount = 1;
+  RayCounts counts;
+  RayCounts pass1Counts; // the counts when pass 1 completed, kept by a pass-2-only restart
+  Clock::time_point start = Clock::now();
+  bool done = false;
+  std::condition_variable doneChanged;
+};
+
+RenderSession::RenderSession(Scene scene, const RenderSettings& settings, AccelKind accel)
+    : scene_(std::make_unique<Scene>(std::move(scene))), accelKind_(accel), settings_(settings) {
+  accel_ = makeAccel(*scene_, accelKind_);
+  startWorkers(false);
+}
+
+RenderSession::~RenderSession() { stopWorkers(); }
+
+void RenderSession::stopWorkers() {
+  cancel_.store(true, std::memory_order_relaxed);
+  if (driver_.joinable()) driver_.join();
+  cancel_.store(false, std::memory_order_relaxed);
+}
+
+void RenderSession::startWorkers(bool keepPass1) {
+  auto work = std::make_unique<Work>(settings_.width, settings_.height);
+  {
+    std::lock_guard lock(mutex_);
+    if (work_ && work_->film.width == settings_.width && work_->film.height == settings_.height) {
+      // Until the new samples arrive the window keeps showing the old picture
+      // (marked stale), rather than flashing black on every drag of a light.
+      work->display = work_->display;
+      if (keepPass1) {
+        work->film.centre = work_->film.centre;
+        work->film.radiance = work_->film.centre;
+        work->display = work_->film.centre;
+        std::fill(work->displayLevel.begin(), work->displayLevel.end(), std::uint8_t(1));
+        work->sumMax = work_->sumMax;
+        work->pass1Pixels = work_->pass1Pixels;
+        work->counts = work_->pass1Counts;
+        work->pass1Counts = work_->pass1Counts;
+        work->level = 1;
+      }
+    }
+    work_ = std::move(work);
+    version_.fetch_add(1, std::memory_order_release);
+  }
+  Work* current = work_.get(); // replaced only after this thread is joined
+  driver_ = std::jthread([this, current, keepPass1] { run(*current, keepPass1); });
+}
+
+void RenderSession::restart(bool keepPass1) {
+  stopWorkers();
+  ++restarts_;
+  startWorkers(keepPass1);
+}
+
+void RenderSession::setSettings(const RenderSettings& settings) {
+  const RenderSettings old = settings_;
+  bool pass1Complete;
+  {
+    std::lock_guard lock(mutex_);
+    pass1Complete = work_->phase != SessionPhase::Coarse;
+  }
+  // thresh and jitter only steer pass 2: a finished pass 1 stays valid.
+  const bool onlyPass2 = old.width == settings.width && old.height == settings.height &&
+                         old.maxDepth == settings.maxDepth && old.tileSize == settings.tileSize;
+  stopWorkers();
+  settings_ = settings;
+  ++restarts_;
+  startWorkers(onlyPass2 && pass1Complete);
+}
+
+void RenderSession::setLight(std::size_t index, const Light& light) {
+  stopWorkers(); // the workers read the lights: change them only while none runs
+  scene_->lights.at(index) = light;
+  ++restarts_;
+  startWorkers(false);
+}
+
+void RenderSession::setAmbient(const Color& ambient) {
+  stopWorkers();
+  scene_->ambient = ambient;
+  ++restarts_;
+  startWorkers(false);
+}
+
+void RenderSession::setCamera(const CameraSpec& camera) {
+  stopWorkers();
+  scene_->camera = camera;
+  ++restarts_;
+  startWorkers(false);
+}
+
+void RenderSession::setScene(Scene scene) {
+  stopWorkers();
+  auto next = std::make_unique<Scene>(std::move(scene));
+  accel_ = makeAccel(*next, accelKind_);
+  scene_ = std::move(next);
+  ++restarts_;
+  startWorkers(false);
+}
+
+RenderSettings RenderSession::settings() const { return settings_; }
+
+Scene RenderSession::sceneCopy() const { return *scene_; }
+
+void RenderSession::run(Work& work, bool keepPass1) {
+  const RenderSettings s = settings_;
+  const Camera camera(scene_->camera, s.width, s.height);
+  const Tracer tracer(*scene_, *accel_, s.maxDepth);
+  const std::vector<Tile> tiles = makeTiles(s.width, s.height, s.tileSize);
+  const int threads = resolveThreadCount(s.threads);
+  auto cancelled = [this] { return cancel_.load(std::memory_order_relaxed); };
+  {
+    std::lock_guard lock(mutex_);
+    work.tileCount = (long long)tiles.size();
+  }
+
+  auto publish = [&](auto&& apply) {
+    std::lock_guard lock(mutex_);
+    apply();
+    version_.fetch_add(1, std::memory_order_release);
+  };
+
+  if (!keepPass1) {
+    for (int level = kCoarsestLevel; level >= 1; level /= 2) {
+      publish([&] { work.level = level; });
+      parallelFor(
+          int(tiles.size()), threads,
+          [&](int item, int) {
+            lowerCurrentThreadPriority();
+            const Tile& tile = tiles[std::size_t(item)];
+            RayCounts counts;
+            std::vector<Sample> samples;
+            for (int y = tile.y0; y < tile.y1; ++y) {
+              if (cancelled()) return; // the tile is dropped, never half-published
+              for (int x = tile.x0; x < tile.x1; ++x) {
+                if (!isNewAtLevel(x, y, level)) continue;
+                ++counts.eyePrimary;
+                const Color c = tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts);
+                samples.push_back({work.film.index(x, y), Rgb(float(c.r), float(c.g), float(c.b))});
+              }
+            }
+            publish([&] {
+              for (const Sample& sample : samples) {
+                work.film.centre[sample.index] = sample.radiance;
+                work.film.radiance[sample.index] = sample.radiance;
+                work.sumMax += double(std::max({sample.radiance.r, sample.radiance.g, sample.radiance.b}));
+                const int x = int(sample.index % std::size_t(s.width));
+                const int y = int(sample.index / std::size_t(s.width));
+                for (int by = y; by < std::min(y + level, s.height); ++by) {
+                  for (int bx = x; bx < std::min(x + level, s.width); ++bx) {
+                    const std::size_t j = work.film.index(bx, by);
+                    if (work.displayLevel[j] <= level) continue; // a finer sample is shown
+                    work.display[j] = sample.radiance;
+                    work.displayLevel[j] = std::uint8_t(level);
+                  }
+                }
+              }
+              work.pass1Pixels += (long long)samples.size();
+              work.counts += counts;
+            });
+          },
+          cancelled);
+      if (cancelled()) return;
+    }
+  }
+
+  // The same function over the same samples as render(): the same avgmax.
+  const double avgmax = averageMax(work.film.centre);
+  publish([&] {
+    work.avgmax = avgmax;
+    work.phase = SessionPhase::Antialias;
+    work.pass1Counts = work.counts;
+  });
+
+  parallelFor(
+      int(tiles.size()), threads,
+      [&](int item, int) {
+        lowerCurrentThreadPriority();
+        const Tile& tile = tiles[std::size_t(item)];
+        RayCounts counts;
+        std::vector<Sample> samples;
+        for (int y = tile.y0; y < tile.y1; ++y) {
+          if (cancelled()) return;
+          for (int x = tile.x0; x < tile.x1; ++x) {
+            if (!needsSupersampling(work.film, x, y, avgmax, s.thresh)) continue;
+            samples.push_back({work.film.index(x, y),
+                               supersamplePixel(tracer, camera, x, y, s.jitter, counts)});
+          }
+        }
+        publish([&] {
+          for (const Sample& sample : samples) {
+            work.film.radiance[sample.index] = sample.radiance;
+            work.film.supersampled[sample.index] = 1;
+            work.display[sample.index] = sample.radiance;
+          }
+          work.supersampled += (long long)samples.size();
+          work.counts += counts;
+          ++work.pass2TilesDone;
+        });
+      },
+      cancelled);
+  if (cancelled()) return;
+
+  publish([&] {
+    work.phase = SessionPhase::Done;
+    work.done = true;
+  });
+  work.doneChanged.notify_all();
+}
+
+bool RenderSession::copyImage(SessionImage& image) const {
+  std::lock_guard lock(mutex_);
+  const std::uint64_t now = version_.load(std::memory_order_acquire);
+  if (image.version == now && image.width == work_->film.width &&
+      image.height == work_->film.height)
+    return false;
+  image.width = work_->film.width;
+  image.height = work_->film.height;
+  image.radiance = work_->display;
+  image.supersampled = work_->film.supersampled;
+  image.version = now;
+  return true;
+}
+
+SessionProgress RenderSession::progress() const {
+  std::lock_guard lock(mutex_);
+  const Work& w = *work_;
+  SessionProgress p;
+  p.phase = w.phase;
+  p.level = w.level;
+  const double pixels = double(w.film.pixelCount());
+  const double pass1 = pixels > 0 ? double(w.pass1Pixels) / pixels : 1.0;
+  const double pass2 = double(w.pass2TilesDone) / double(std::max(1LL, w.tileCount));
+  p.fraction = w.done ? 1.0 : 0.5 * pass1 + 0.5 * pass2;
+  p.pass1Pixels = w.pass1Pixels;
+  p.supersampledPixels = w.supersampled;
+  p.liveAvgmax = w.pass1Pixels > 0 ? w.sumMax / double(w.pass1Pixels) : 0.0;
+  p.avgmax = w.phase == SessionPhase::Coarse ? p.liveAvgmax : w.avgmax;
+  p.counts = w.counts;
+  p.elapsedSeconds = std::chrono::duration<double>(Clock::now() - w.start).count();
+  p.restarts = restarts_.load(std::memory_order_relaxed);
+  return p;
+}
+
+bool RenderSession::finished() const {
+  std::lock_guard lock(mutex_);
+  return work_->done;
+}
+
+RenderResult RenderSession::waitForResult() {
+  std::unique_lock lock(mutex_);
+  work_->doneChanged.wait(lock, [this] { return work_->done; });
+  RenderResult result;
+  result.film = work_->film;
+  result.avgmax = work_->avgmax;
+  result.counts = work_->counts;
+  result.supersampledPixels = work_->supersampled;
+  return result;
+}
+
+} // namespace prism

@@ -1,0 +1,202 @@
+// The previewer's render session, without a window: the progressive schedule
+// takes each sample once, the finished film is exactly render()'s, edits restart
+// and change only what they should, cancellation is prompt.
+#include "core/render_session.h"
+#include "core/scene_parser.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+namespace prism {
+namespace {
+
+RenderSettings smallSettings() {
+  RenderSettings s;
+  s.width = 80;
+  s.height = 60;
+  s.maxDepth = 5;
+  s.thresh = 0.1;
+  s.threads = 2;
+  return s;
+}
+
+Scene shipped(const char* name) {
+  return loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + name);
+}
+
+RenderResult renderDirect(const Scene& scene, const RenderSettings& s) {
+  const auto accel = makeAccel(scene, AccelKind::Groups);
+  return render(scene, *accel, s);
+}
+
+void expectSameFilm(const RenderResult& a, const RenderResult& b) {
+  EXPECT_EQ(a.avgmax, b.avgmax);
+  EXPECT_EQ(a.counts, b.counts);
+  EXPECT_EQ(a.supersampledPixels, b.supersampledPixels);
+  EXPECT_TRUE(a.film.centre == b.film.centre);
+  EXPECT_TRUE(a.film.radiance == b.film.radiance);
+  EXPECT_TRUE(a.film.supersampled == b.film.supersampled);
+}
+
+TEST(CoarseLevels, EveryPixelIsNewAtExactlyOneLevel) {
+  for (int y = 0; y < 37; ++y) {
+    for (int x = 0; x < 53; ++x) {
+      int levels = 0;
+      for (int level : {8, 4, 2, 1}) levels += isNewAtLevel(x, y, level);
+      EXPECT_EQ(levels, 1) << x << "," << y;
+    }
+  }
+  EXPECT_TRUE(isNewAtLevel(0, 0, 8));
+  EXPECT_TRUE(isNewAtLevel(4, 0, 4));
+  EXPECT_TRUE(isNewAtLevel(8, 4, 4));
+  EXPECT_FALSE(isNewAtLevel(8, 8, 4));
+  EXPECT_TRUE(isNewAtLevel(3, 5, 1));
+}
+
+TEST(RenderSession, FinishedFilmEqualsRenderBitForBit) {
+  for (const char* name : {"table.sc", "glass.sc"}) {
+    const Scene scene = shipped(name);
+    RenderSession session(scene, smallSettings());
+    const RenderResult progressive = session.waitForResult();
+    expectSameFilm(progressive, renderDirect(scene, smallSettings()));
+    // No sample traced twice: one centre per pixel, sixteen per supersampled pixel.
+    EXPECT_EQ(progressive.counts.eyePrimary, 80u * 60u);
+    EXPECT_EQ(progressive.counts.eyeAntialias, 16u * std::uint64_t(progressive.supersampledPixels));
+    EXPECT_TRUE(session.finished());
+    const SessionProgress p = session.progress();
+    EXPECT_EQ(p.phase, SessionPhase::Done);
+    EXPECT_DOUBLE_EQ(p.fraction, 1.0);
+    EXPECT_EQ(p.avgmax, progressive.avgmax);
+    // When done, the display shows the final picture.
+    SessionImage image;
+    ASSERT_TRUE(session.copyImage(image));
+    EXPECT_TRUE(image.radiance == progressive.film.radiance);
+    EXPECT_FALSE(session.copyImage(image)); // nothing new since
+  }
+}
+
+// Two rooms side by side, separated by an opaque wall; light 1 lights the left
+// room only, light 2 the right room only.
+const char* kTwoRooms = R"(
+eye 0 3 12  lookat 0 1 0  fov 50
+ambient 0.02 0.02 0.02
+light -3 3 2  30 30 30
+light 3 3 2   20 25 30
+surface 0.8 0.8 0.8  0.9 0.1 0  20 1
+polygon 4  -8 0 -4  -8 0 6  8 0 6  8 0 -4
+polygon 4  -8 0 -4  8 0 -4  8 8 -4  -8 8 -4
+# the dividing wall, both faces
+polygon 4  0 0 -4  0 8 -4  0 8 6  0 0 6
+surface 0.9 0.3 0.2  0.8 0.2 0  30 1
+sphere -3 1 0 1
+sphere 3 1 0 1
+)";
+
+TEST(RenderSession, MovingALightChangesExactlyWhereThatLightReaches) {
+  const Scene scene = parseScene(kTwoRooms, "rooms.sc");
+  const RenderSettings s = smallSettings();
+  RenderSession session(scene, s);
+  const RenderResult before = session.waitForResult();
+
+  Light moved = scene.lights[0];
+  moved.position = glm::dvec3(-5, 2, 3);
+  session.setLight(0, moved);
+  EXPECT_EQ(session.progress().restarts, 1u);
+  const RenderResult after = session.waitForResult();
+
+  // The restarted session equals a fresh render of the edited scene...
+  Scene edited = scene;
+  edited.lights[0] = moved;
+  expectSameFilm(after, renderDirect(edited, s));
+
+  // ...and its pass 1 differs from the old one only where light 1 reaches, in
+  // either position: where switching light 1 off changes the picture.
+  Scene off = scene, offMoved = edited;
+  off.lights[0].intensity = Color(0.0);
+  offMoved.lights[0].intensity = Color(0.0);
+  const RenderResult dark = renderDirect(off, s);
+  EXPECT_TRUE(dark.film.centre == renderDirect(offMoved, s).film.centre);
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < before.film.centre.size(); ++i) {
+    if (before.film.centre[i] == after.film.centre[i]) continue;
+    ++changed;
+    const bool reachedBefore = before.film.centre[i] != dark.film.centre[i];
+    const bool reachedAfter = after.film.centre[i] != dark.film.centre[i];
+    EXPECT_TRUE(reachedBefore || reachedAfter) << "pixel " << i;
+  }
+  EXPECT_GT(changed, 100u);
+  // The right room, lit by light 2 only, did not change: its right third.
+  for (int y = 0; y < s.height; ++y)
+    for (int x = s.width * 3 / 4; x < s.width; ++x)
+      EXPECT_EQ(before.film.centre[before.film.index(x, y)], after.film.centre[after.film.index(x, y)]);
+}
+
+TEST(RenderSession, ThresholdChangeKeepsPassOneAndRedoesOnlyPassTwo) {
+  const Scene scene = shipped("glass.sc");
+  RenderSettings s = smallSettings();
+  RenderSession session(scene, s);
+  const RenderResult first = session.waitForResult();
+  s.thresh = 0.02;
+  session.setSettings(s);
+  const RenderResult second = session.waitForResult();
+  expectSameFilm(second, renderDirect(scene, s));
+  EXPECT_GT(second.supersampledPixels, first.supersampledPixels);
+  EXPECT_EQ(second.counts.eyePrimary, 80u * 60u); // pass 1 was kept, not retraced
+  s.maxDepth = 2;                                  // depth changes every sample
+  session.setSettings(s);
+  expectSameFilm(session.waitForResult(), renderDirect(scene, s));
+}
+
+TEST(RenderSession, CameraAndAmbientEditsRestartWithTheEditedScene) {
+  const Scene scene = shipped("table.sc");
+  const RenderSettings s = smallSettings();
+  RenderSession session(scene, s);
+  Scene edited = scene;
+  edited.ambient = Color(0.3, 0.2, 0.1);
+  edited.camera.eye += glm::dvec3(1.0, 0.5, 0.0);
+  session.setAmbient(edited.ambient);
+  session.setCamera(edited.camera);
+  expectSameFilm(session.waitForResult(), renderDirect(edited, s));
+  EXPECT_EQ(session.progress().restarts, 2u);
+}
+
+TEST(RenderSession, CancellationIsPromptComparedWithTheRenderItStops) {
+  // A render that takes a good fraction of a second, cancelled right after it
+  // has started: the edit must return long before the render could have ended.
+  const Scene scene = shipped("tree.sc");
+  RenderSettings s = smallSettings();
+  s.width = 240;
+  s.height = 180;
+  using Clock = std::chrono::steady_clock;
+  const auto fullStart = Clock::now();
+  RenderSession full(scene, s);
+  full.waitForResult();
+  const double fullSeconds = std::chrono::duration<double>(Clock::now() - fullStart).count();
+
+  RenderSession session(scene, s);
+  while (session.progress().pass1Pixels == 0) std::this_thread::yield();
+  const auto cancelStart = Clock::now();
+  session.setAmbient(Color(0.1)); // cancels, joins the workers, restarts
+  const double cancelSeconds = std::chrono::duration<double>(Clock::now() - cancelStart).count();
+  EXPECT_LT(cancelSeconds, 0.25 * fullSeconds)
+      << "cancel took " << cancelSeconds << " s; a full render takes " << fullSeconds << " s";
+  EXPECT_FALSE(session.finished());
+}
+
+TEST(RenderSession, DisplayAlwaysHasTheImageSizeAndEndsAsTheFilm) {
+  const Scene scene = shipped("chex.sc");
+  RenderSession session(scene, smallSettings());
+  SessionImage image;
+  session.copyImage(image);
+  EXPECT_EQ(image.width, 80);
+  EXPECT_EQ(image.radiance.size(), 80u * 60u);
+  const RenderResult r = session.waitForResult();
+  session.copyImage(image);
+  EXPECT_TRUE(image.radiance == r.film.radiance);
+  EXPECT_TRUE(image.supersampled == r.film.supersampled);
+}
+
+} // namespace
+} // namespace prism

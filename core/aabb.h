@@ -28,6 +28,7 @@ struct Aabb {
   // boxes (of axis-aligned polygons) have thickness and the slab test never
   // evaluates 0 * inf for a ray lying in a face plane.
   void pad() {
+    if (empty()) return; // inf - inf would make an empty box NaN
     const double margin = 1e-9 * (maxAbsComponent(lo) + maxAbsComponent(hi)) + 1e-300;
     lo -= Vec3(margin);
     hi += Vec3(margin);

@@ -450,6 +450,44 @@ TEST(Refraction, SnellThroughASlab) {
   }
 }
 
+TEST(Refraction, BallLensBendsTwiceBySnellsLaw) {
+  // A ray parallel to the x axis at height h through a glass sphere of radius R:
+  // incidence theta1 = asin(h/R), refraction theta2 = asin(sin(theta1)/ir); it
+  // turns by theta1 - theta2 toward the axis on entering and again on leaving,
+  // after a chord of 2 R cos(theta2).
+  const double radius = 2.0, ir = 1.5;
+  Scene scene;
+  scene.background = Color(0.3, 0.2, 0.1);
+  const std::uint32_t glass = addMaterial(scene, makeMaterial(Color(1.0), 0.0, 0.0, 1.0, 1.0, ir));
+  addSphere(scene, Vec3(0.0), radius, glass);
+  for (double h : {0.0, 0.5, 1.0, 1.9}) {
+    const double theta1 = std::asin(h / radius), theta2 = std::asin(h / radius / ir);
+    const double turn = theta1 - theta2;
+    const Vec3 entry(-std::sqrt(radius * radius - h * h), h, 0.0);
+    const Traced tr = run(scene, Ray{Vec3(-10, h, 0), Vec3(1, 0, 0)}, 4);
+    EXPECT_EQ(tr.counts.transmitted, 2u) << h;
+    EXPECT_EQ(tr.counts.tirEvents, 0u);
+    expectColorNear(tr.radiance, scene.background, 1e-12);
+    ASSERT_TRUE(tr.tree.hit);
+    EXPECT_FALSE(tr.tree.leaving);
+    expectVecNear(tr.tree.point, entry, 1e-12);
+    ASSERT_EQ(tr.tree.children.size(), 1u);
+    const RayTreeNode& inside = tr.tree.children[0];
+    expectVecNear(inside.ray.dir, Vec3(std::cos(turn), -std::sin(turn), 0.0), 1e-12);
+    ASSERT_TRUE(inside.hit);
+    EXPECT_TRUE(inside.leaving);
+    // The inner ray starts ~1e-9 of the coordinates off the surface (SPEC 1.5),
+    // which moves the exit by about 1e-8 here.
+    EXPECT_NEAR(inside.where.t, 2.0 * radius * std::cos(theta2), 1e-7);
+    expectVecNear(inside.point, entry + 2.0 * radius * std::cos(theta2) * inside.ray.dir, 1e-7);
+    expectVecNear(inside.shadingNormal, -inside.point / radius, 1e-7);
+    ASSERT_EQ(inside.children.size(), 1u);
+    const RayTreeNode& out = inside.children[0];
+    expectVecNear(out.ray.dir, Vec3(std::cos(2 * turn), -std::sin(2 * turn), 0.0), 1e-7);
+    EXPECT_FALSE(out.hit);
+  }
+}
+
 TEST(Refraction, TotalInternalReflectionAtAndPastTheCriticalAngle) {
   // A lone transparent polygon met from its back: leaving, eta = ir.
   const double ir = 1.5, ksr = 0.5, kst = 1.0;
@@ -672,22 +710,8 @@ const Vec3 kSphereCentre(0, 0, 1);
 const Vec3 kLightPos(3, 1, 3);
 const Color kLight(30.0, 25.0, 20.0);
 const Color kAmbient(0.05, 0.04, 0.03);
-const Material kFloorMat = [] {
-  Material m;
-  m.color = Color(0.9, 0.85, 0.8);
-  m.kdr = 0.7;
-  m.ksr = 0.3;
-  m.e = 15;
-  return m;
-}();
-const Material kBallMat = [] {
-  Material m;
-  m.color = Color(0.8, 0.3, 0.2);
-  m.kdr = 0.9;
-  m.ksr = 0.4;
-  m.e = 30;
-  return m;
-}();
+const Material kFloorMat = makeMaterial(Color(0.9, 0.85, 0.8), 0.7, 0.3, 0.0, 15.0);
+const Material kBallMat = makeMaterial(Color(0.8, 0.3, 0.2), 0.9, 0.4, 0.0, 30.0);
 
 Scene sphereOnFloor(double s) {
   Scene scene;

@@ -10,6 +10,10 @@ packages=(
   libcli11-dev                      # command-line parsing
   nlohmann-json3-dev                # statistics as JSON
   libgtest-dev                      # tests
+  # the previewer: windows, OpenGL (GLVND) and Mesa's software rasteriser, Dear ImGui
+  libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev
+  libosmesa6-dev                    # the display test draws offscreen through OSMesa
+  xvfb xauth                        # the window tests start their own X server (xvfb-run)
 )
 
 missing=()

@@ -1,5 +1,6 @@
 #include "core/accel.h"
 
+#include "core/bvh.h"
 #include "core/geometry.h"
 #include "core/group_bvh.h"
 
@@ -7,6 +8,7 @@ namespace prism {
 
 const char* accelKindName(AccelKind kind) {
   switch (kind) {
+  case AccelKind::Bvh: return "bvh";
   case AccelKind::Groups: return "groups";
   case AccelKind::None: return "none";
   }
@@ -61,6 +63,8 @@ public:
     return false;
   }
 
+  std::size_t memoryBytes() const override { return refs_.size() * sizeof(PrimitiveRef); }
+
 private:
   const Scene& scene_;
   std::vector<PrimitiveRef> refs_;
@@ -70,6 +74,7 @@ private:
 
 std::unique_ptr<Accel> makeAccel(const Scene& scene, AccelKind kind) {
   switch (kind) {
+  case AccelKind::Bvh: return std::make_unique<Bvh>(scene);
   case AccelKind::Groups: return std::make_unique<GroupBvh>(scene);
   case AccelKind::None: return std::make_unique<BruteForce>(scene);
   }

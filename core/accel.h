@@ -30,9 +30,11 @@ inline void keepNearest(const Hit& candidate, bool& found, Hit& nearest, Interva
   range.max = std::nextafter(nearest.t, std::numeric_limits<double>::infinity());
 }
 
-// How rays find primitives. `Groups` uses the push/pop groups as the hierarchy
-// (with a median-split tree inside large groups); `None` tests every primitive.
-enum class AccelKind { Groups, None };
+// How rays find primitives. `Bvh` (the default) builds its own hierarchy with
+// the surface area heuristic; `Groups` uses the push/pop groups as the
+// hierarchy (with a median-split tree inside large groups); `None` tests every
+// primitive. All three report exactly the same hits.
+enum class AccelKind { Bvh, Groups, None };
 
 const char* accelKindName(AccelKind kind);
 
@@ -46,6 +48,10 @@ public:
   virtual bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
                           Hit& hit) const = 0;
   virtual bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const = 0;
+
+  // Bytes held by the structure itself (nodes and primitive references, not the
+  // scene's primitives), for the benchmark's bytes per primitive.
+  virtual std::size_t memoryBytes() const = 0;
 };
 
 std::unique_ptr<Accel> makeAccel(const Scene& scene, AccelKind kind);

@@ -17,6 +17,11 @@ public:
                   Hit& hit) const override;
   bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override;
 
+  std::size_t memoryBytes() const override {
+    return nodes_.size() * sizeof(Node) + children_.size() * sizeof(std::uint32_t) +
+           prims_.size() * sizeof(PrimitiveRef);
+  }
+
   std::size_t nodeCount() const { return nodes_.size(); }
 
 private:

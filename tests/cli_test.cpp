@@ -211,11 +211,31 @@ TEST_F(Cli, RendersEveryShippedScene) {
   }
 }
 
+TEST_F(Cli, BenchPrintsItsTablesAndScalingData) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path data = dir_ / "scaling.dat";
+  const CommandResult run = prism("bench " + s + " --size 16 --accel bvh,none --budget 0.05 " +
+                                  "--scaling-max 1000 --data " + data.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("| s.sc | 1 | bvh |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| s.sc | 1 | none |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| soup | 1000 | bvh |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| sphereflake | 1001 | none |"), std::string::npos) << run.out;
+  const std::string table = slurp(data);
+  EXPECT_NE(table.find("soup 1000 bvh "), std::string::npos) << table;
+  EXPECT_EQ(prism("bench --accel fast").exitCode, 2);
+}
+
 TEST_F(Cli, TreeGeneratorReproducesTheCommittedTree) {
-  const fs::path generated = dir_ / "tree.sc";
-  const std::string command = std::string("'") + PRISM_TREE_GEN + "' '" + generated.string() + "'";
+  fs::create_directories(dir_ / "parts");
+  const std::string command = std::string("'") + PRISM_TREE_GEN + "' '" + dir_.string() + "'";
   ASSERT_EQ(std::system(command.c_str()), 0);
-  EXPECT_EQ(slurp(generated), slurp(scene("tree.sc")));
+  for (const char* file : {"tree.sc", "forest.sc", "parts/tree_body.sc"}) {
+    SCOPED_TRACE(file);
+    const std::string generated = slurp(dir_ / file);
+    EXPECT_FALSE(generated.empty());
+    EXPECT_EQ(generated, slurp(scene(file)));
+  }
 }
 
 } // namespace

@@ -37,7 +37,7 @@ class Determinism : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Determinism, OneThreadEqualsManyThreads) {
   const Scene scene = loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + GetParam());
-  const auto accel = makeAccel(scene, AccelKind::Groups);
+  const auto accel = makeAccel(scene, AccelKind::Bvh);
   for (bool jitter : {false, true}) {
     const RenderResult one = renderWith(scene, *accel, 1, 32, jitter);
     EXPECT_GT(one.supersampledPixels, 0);
@@ -51,9 +51,23 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, Determinism,
 
 TEST(Determinism, AccelerationDoesNotChangeThePicture) {
   const Scene scene = loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/glass.sc");
+  const auto bvh = makeAccel(scene, AccelKind::Bvh);
   const auto groups = makeAccel(scene, AccelKind::Groups);
   const auto none = makeAccel(scene, AccelKind::None);
-  expectIdentical(renderWith(scene, *groups, 2, 32, false), renderWith(scene, *none, 2, 32, false));
+  const RenderResult reference = renderWith(scene, *none, 2, 32, false);
+  expectIdentical(reference, renderWith(scene, *groups, 2, 32, false));
+  expectIdentical(reference, renderWith(scene, *bvh, 2, 32, false));
+}
+
+TEST(Determinism, BvhAndGroupsGiveTheSamePictureOfEveryShippedScene) {
+  for (const char* name : {"table.sc", "chex.sc", "tree.sc"}) {
+    const Scene scene = loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + name);
+    const auto bvh = makeAccel(scene, AccelKind::Bvh);
+    const auto groups = makeAccel(scene, AccelKind::Groups);
+    SCOPED_TRACE(name);
+    expectIdentical(renderWith(scene, *groups, 2, 32, false),
+                    renderWith(scene, *bvh, 2, 32, false));
+  }
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 // prism: the command line. Parses arguments and hands them to a command.
+#include "bench_command.h"
 #include "render_command.h"
+#include "view_command.h"
 
 #include <CLI/CLI.hpp>
 
@@ -31,9 +33,11 @@ int main(int argc, char** argv) {
   renderCmd->add_flag("--jitter", render.jitter, "Jitter the 16 sub-samples within their cells");
   renderCmd->add_flag("--float", render.floatTiff,
                       "Write float radiance before exposure (implied by .exr and .hdr)");
-  const std::map<std::string, AccelKind> accels{{"groups", AccelKind::Groups},
-                                                {"none", AccelKind::None}};
-  renderCmd->add_option("--accel", render.accel, "Ray acceleration: groups (push/pop hierarchy) or none")
+  const std::map<std::string, AccelKind> accels{
+      {"bvh", AccelKind::Bvh}, {"groups", AccelKind::Groups}, {"none", AccelKind::None}};
+  renderCmd->add_option("--accel", render.accel,
+                        "Ray acceleration: bvh (SAH hierarchy, default), groups (the push/pop "
+                        "hierarchy) or none (test every primitive)")
       ->transform(CLI::CheckedTransformer(accels, CLI::ignore_case));
   renderCmd->add_option("--stats-json", render.statsJson, "Also write the statistics as JSON to this file");
   renderCmd->add_option("--pixel", render.pixel, "Print the ray tree of pixel X Y instead of rendering")
@@ -46,12 +50,21 @@ int main(int argc, char** argv) {
   });
   (void)output;
 
+  BenchCommandOptions bench;
+  CLI::App* benchCmd = addBenchCommand(app, bench);
+
+  ViewCommandOptions view;
+  CLI::App* viewCmd = addViewCommand(app, view);
+
   try {
-    app.parse(argc, argv);
+    const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
+    app.parse(int(args.size()), args.data());
   } catch (const CLI::ParseError& error) {
     const int code = app.exit(error);
     return code == 0 ? kExitOk : kExitUsage;
   }
   if (renderCmd->parsed()) return runRenderCommand(render);
+  if (viewCmd->parsed()) return runViewCommand(view);
+  if (benchCmd->parsed()) return runBenchCommand(bench);
   return kExitUsage;
 }

@@ -19,7 +19,7 @@ struct RenderCommandOptions {
   int threads = 0;               // 0: all cores
   bool jitter = false;
   bool floatTiff = false;        // write float radiance instead of 8-bit pixels
-  AccelKind accel = AccelKind::Groups;
+  AccelKind accel = AccelKind::Bvh;
   std::string statsJson;         // where to write the statistics as JSON
   std::vector<int> pixel;        // X Y: print this pixel's ray tree instead of rendering
   bool quiet = false;            // no progress, no statistics on stderr

@@ -1,0 +1,436 @@
+// Every acceleration mode against brute force: the same nearest hit (found or
+// not, t bit for bit, and which primitive, ties included) on many thousands of
+// random rays over random scenes, with fixed seeds; rays that start on
+// surfaces, run along the axes, lie in box faces or graze primitives; and
+// any-hit agreeing with closest-hit on occlusion. Also the SAH builder's tree
+// and the BVH's size.
+#include "core/bvh.h"
+#include "core/sah_builder.h"
+#include "core/scene_generators.h"
+
+#include "scene_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <random>
+
+namespace prism {
+namespace {
+
+using test::addEllipsoid;
+using test::addGroup;
+using test::addMaterial;
+using test::addPolygon;
+using test::addSphere;
+
+constexpr AccelKind kAccelerated[] = {AccelKind::Bvh, AccelKind::Groups};
+
+Vec3 randomUnit(std::mt19937& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  Vec3 d;
+  do
+    d = Vec3(n(rng), n(rng), n(rng));
+  while (glm::dot(d, d) < 1e-6);
+  return glm::normalize(d);
+}
+
+// A direction that is axis-parallel three times in ten.
+Vec3 randomDirection(std::mt19937& rng) {
+  std::uniform_int_distribution<int> pick(0, 9);
+  const int k = pick(rng);
+  if (k < 3) {
+    Vec3 d(0.0);
+    d[k] = pick(rng) < 5 ? -1.0 : 1.0;
+    return d;
+  }
+  return randomUnit(rng);
+}
+
+// Spheres, ellipsoids and polygons (random triangles and n-gons, grid-aligned
+// rectangles with shared edges, and exact duplicates for ties), spread over
+// nested groups.
+Scene randomScene(std::mt19937& rng, int primitives, int groups) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> cell(-12, 12), size(1, 5), axis(0, 2), kind(0, 9);
+  Scene scene;
+  const std::uint32_t mat = addMaterial(scene, Material{});
+  for (int g = 1; g <= groups; ++g) {
+    std::uniform_int_distribution<int> parent(std::max(0, g - 3), g - 1);
+    addGroup(scene, std::uint32_t(u(rng) < -0.6 ? 0 : parent(rng)));
+  }
+  std::uniform_int_distribution<std::uint32_t> pickGroup(0, std::uint32_t(scene.groups.size() - 1));
+  for (int i = 0; i < primitives; ++i) {
+    const std::uint32_t g = pickGroup(rng);
+    const Vec3 c(8 * u(rng), 8 * u(rng), 8 * u(rng));
+    switch (kind(rng)) {
+    case 0:
+    case 1: addSphere(scene, c, 0.05 + 1.5 * std::abs(u(rng)), mat, g); break;
+    case 2: {
+      Mat3 m;
+      do
+        m = Mat3(Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)),
+                 Vec3(u(rng), u(rng), u(rng)));
+      while (std::abs(glm::determinant(m)) < 0.05);
+      addEllipsoid(scene, 1.5 * m, c, mat, g);
+      break;
+    }
+    case 3:
+    case 4: { // grid-aligned rectangle: coplanar neighbours, shared edges, flat boxes
+      const int a = axis(rng), b = (a + 1) % 3, cc = (a + 2) % 3;
+      Vec3 lo(cell(rng) * 0.5, cell(rng) * 0.5, cell(rng) * 0.5);
+      Vec3 p1 = lo, p2 = lo, p3 = lo;
+      p1[b] += size(rng) * 0.5;
+      p2[b] = p1[b];
+      p2[cc] += size(rng) * 0.5;
+      p3[cc] = p2[cc];
+      addPolygon(scene, {lo, p1, p2, p3}, mat, g);
+      break;
+    }
+    case 5: { // an exact duplicate of an earlier primitive: a tie to break
+      if (!scene.polygons.empty() && u(rng) < 0) {
+        const Polygon& p =
+            scene.polygons[std::size_t(std::abs(u(rng)) * double(scene.polygons.size() - 1))];
+        std::vector<Vec3> v(scene.polygonVertices.begin() + p.firstVertex,
+                            scene.polygonVertices.begin() + p.firstVertex + p.vertexCount);
+        addPolygon(scene, v, mat, g);
+      } else if (!scene.spheres.empty()) {
+        const Sphere s =
+            scene.spheres[std::size_t(std::abs(u(rng)) * double(scene.spheres.size() - 1))];
+        addSphere(scene, s.center, s.radius, mat, g);
+      }
+      break;
+    }
+    default: { // convex n-gon in a random plane, or a triangle
+      const Vec3 n = randomUnit(rng);
+      const Vec3 e1 =
+          glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+      const Vec3 e2 = glm::cross(n, e1);
+      const double r = 0.1 + 2 * std::abs(u(rng));
+      const int count = 3 + int(std::abs(u(rng)) * 5);
+      std::vector<Vec3> v;
+      for (int k = 0; k < count; ++k) {
+        const double a = 2 * std::numbers::pi * (k + 0.3 * u(rng)) / count;
+        v.push_back(c + r * (std::cos(a) * e1 + std::sin(a) * e2));
+      }
+      if (!polygonProblem(v)) addPolygon(scene, v, mat, g);
+      break;
+    }
+    }
+  }
+  return scene;
+}
+
+struct Tally {
+  int queries = 0, hits = 0, ties = 0;
+};
+
+// One query against every accel: the same answer as brute force, and any-hit
+// agrees with it. Returns brute force's answer.
+bool expectSameHit(const Scene& scene, const std::vector<std::unique_ptr<Accel>>& accels,
+                   const Accel& brute, const Ray& ray, Interval range, const PrimitiveRef* skip,
+                   Tally& tally, Hit* out = nullptr) {
+  ++tally.queries;
+  Hit expected;
+  const bool found = brute.closestHit(ray, range, skip, expected);
+  EXPECT_EQ(brute.anyHit(ray, range, skip), found);
+  for (const auto& accel : accels) {
+    Hit h;
+    const bool f = accel->closestHit(ray, range, skip, h);
+    EXPECT_EQ(f, found) << "origin " << ray.origin.x << " " << ray.origin.y << " " << ray.origin.z
+                        << " dir " << ray.dir.x << " " << ray.dir.y << " " << ray.dir.z;
+    EXPECT_EQ(accel->anyHit(ray, range, skip), found);
+    if (f && found) {
+      EXPECT_EQ(h.t, expected.t);
+      EXPECT_EQ(h.primitive, expected.primitive)
+          << scene.describe(h.primitive) << " vs " << scene.describe(expected.primitive);
+      // Nothing is hit before the nearest hit.
+      Interval before = range;
+      before.max = expected.t;
+      EXPECT_FALSE(accel->anyHit(ray, before, skip));
+    }
+  }
+  if (!found) return false;
+  ++tally.hits;
+  if (out != nullptr) *out = expected;
+  // Count the ties the order of PrimitiveRef had to break.
+  for (const PrimitiveRef& other : scene.allPrimitives()) {
+    double t;
+    if (other == expected.primitive || (skip != nullptr && other == *skip)) continue;
+    if (intersectPrimitive(scene, other, ray, range, t) && t == expected.t) {
+      EXPECT_TRUE(expected.primitive < other);
+      ++tally.ties;
+    }
+  }
+  return true;
+}
+
+std::vector<std::unique_ptr<Accel>> accelerated(const Scene& scene) {
+  std::vector<std::unique_ptr<Accel>> accels;
+  for (AccelKind kind : kAccelerated)
+    accels.push_back(makeAccel(scene, kind));
+  return accels;
+}
+
+TEST(Accel, EveryModeMatchesBruteForceOnRandomRays) {
+  std::mt19937 rng(4004);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Tally tally;
+  int surfaceStarts = 0;
+  for (int sceneIndex = 0; sceneIndex < 16; ++sceneIndex) {
+    const Scene scene =
+        randomScene(rng, 30 + 12 * sceneIndex, sceneIndex % 3 == 0 ? 0 : 3 * sceneIndex);
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    const std::vector<PrimitiveRef> prims = scene.allPrimitives();
+    std::uniform_int_distribution<std::size_t> pick(0, prims.size() - 1);
+    for (int i = 0; i < 800; ++i) {
+      Ray ray{Vec3(14 * u(rng), 14 * u(rng), 14 * u(rng)), randomDirection(rng)};
+      if (i % 2 == 0) { // aimed at a primitive's box centre, so most rays hit
+        const Vec3 to = scene.bounds(prims[pick(rng)]).centroid();
+        if (to != ray.origin) ray.dir = glm::normalize(to - ray.origin);
+      }
+      Interval range;
+      if (i % 5 == 1) range.max = 2 + 20 * std::abs(u(rng));
+      if (i % 5 == 2) range.min = 3 * std::abs(u(rng));
+      Hit h;
+      if (!expectSameHit(scene, accels, *brute, ray, range, nullptr, tally, &h)) continue;
+      // A secondary ray from exactly the point just hit, in every direction,
+      // skipping the polygon it leaves half of the time (as the tracer does).
+      const Ray onSurface{ray.at(h.t), randomDirection(rng)};
+      const PrimitiveRef* skip =
+          h.primitive.kind == PrimitiveKind::Polygon && i % 2 == 0 ? &h.primitive : nullptr;
+      expectSameHit(scene, accels, *brute, onSurface, Interval{}, skip, tally);
+      ++surfaceStarts;
+    }
+  }
+  EXPECT_GT(tally.queries, 10000);
+  EXPECT_GT(tally.hits, 3000);
+  EXPECT_GT(surfaceStarts, 2000);
+  EXPECT_GT(tally.ties, 10); // the duplicates were really exercised
+}
+
+TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  Tally tally;
+  for (int sceneIndex = 0; sceneIndex < 8; ++sceneIndex) {
+    const Scene scene = randomScene(rng, 80 + 20 * sceneIndex, sceneIndex * 2);
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    const std::vector<PrimitiveRef> prims = scene.allPrimitives();
+    std::uniform_int_distribution<std::size_t> pick(0, prims.size() - 1);
+    std::uniform_int_distribution<int> axis(0, 2);
+    for (int i = 0; i < 400; ++i) {
+      const PrimitiveRef target = prims[pick(rng)];
+      const Aabb box = scene.bounds(target);
+      // A point on a face of the primitive's box, a ray lying in that face's
+      // plane (axis-parallel or not) or running along one of its edges.
+      const int a = axis(rng);
+      Vec3 o = box.lo + Vec3(unit(rng), unit(rng), unit(rng)) * box.extent();
+      o[a] = i % 2 == 0 ? box.lo[a] : box.hi[a];
+      Vec3 d = randomUnit(rng);
+      d[a] = 0.0;
+      if (i % 3 == 0) {
+        d = Vec3(0.0);
+        d[(a + 1) % 3] = u(rng) < 0 ? -1 : 1;
+        o[(a + 2) % 3] = u(rng) < 0 ? box.lo[(a + 2) % 3] : box.hi[(a + 2) % 3]; // an edge
+      }
+      if (glm::dot(d, d) == 0.0) continue;
+      d = glm::normalize(d);
+      expectSameHit(scene, accels, *brute, Ray{o - 20.0 * d, d}, Interval{}, nullptr, tally);
+      // Straight at a box corner, and at a polygon's vertex.
+      const Vec3 corner(u(rng) < 0 ? box.lo.x : box.hi.x, u(rng) < 0 ? box.lo.y : box.hi.y,
+                        u(rng) < 0 ? box.lo.z : box.hi.z);
+      const Vec3 from(15 * u(rng), 15 * u(rng), 15 * u(rng));
+      if (corner != from)
+        expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(corner - from)}, Interval{},
+                      nullptr, tally);
+      if (target.kind == PrimitiveKind::Polygon) {
+        const Polygon& p = scene.polygons[target.index];
+        const Vec3 v = scene.polygonVertices[p.firstVertex + std::uint32_t(i) % p.vertexCount];
+        if (v != from)
+          expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(v - from)}, Interval{},
+                        nullptr, tally);
+      }
+      // Tangent to a sphere: through the point at exactly its radius off the
+      // centre, perpendicular to the offset.
+      if (target.kind == PrimitiveKind::Sphere) {
+        const Sphere& s = scene.spheres[target.index];
+        const Vec3 n = randomUnit(rng);
+        Vec3 t = glm::cross(n, randomUnit(rng));
+        if (glm::dot(t, t) > 1e-6) {
+          t = glm::normalize(t);
+          expectSameHit(scene, accels, *brute, Ray{s.center + s.radius * n - 10.0 * t, t},
+                        Interval{}, nullptr, tally);
+        }
+      }
+    }
+  }
+  EXPECT_GT(tally.queries, 5000);
+  EXPECT_GT(tally.hits, 1500);
+}
+
+TEST(Accel, AnyHitAgreesWithClosestHitOnOcclusion) {
+  // Shadow-ray queries as the tracer makes them: from a point on a surface to
+  // a light, the range ending at the light.
+  std::mt19937 rng(31337);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int occluded = 0, clear = 0;
+  for (int sceneIndex = 0; sceneIndex < 6; ++sceneIndex) {
+    const Scene scene = randomScene(rng, 150, 10);
+    for (AccelKind kind : {AccelKind::Bvh, AccelKind::Groups, AccelKind::None}) {
+      const auto accel = makeAccel(scene, kind);
+      std::mt19937 local{std::uint32_t(sceneIndex)};
+      std::uniform_real_distribution<double> v(-1, 1);
+      for (int i = 0; i < 800; ++i) {
+        const Vec3 from(12 * v(local), 12 * v(local), 12 * v(local));
+        const Vec3 light(12 * v(local), 12 * v(local), 12 * v(local));
+        const double length = glm::length(light - from);
+        if (length == 0.0) continue;
+        const Ray ray{from, (light - from) / length};
+        const Interval range{0.0, length};
+        Hit h;
+        const bool blocked = accel->closestHit(ray, range, nullptr, h);
+        EXPECT_EQ(accel->anyHit(ray, range, nullptr), blocked) << accelKindName(kind);
+        if (blocked) {
+          EXPECT_LT(h.t, length);
+          // With the range ending just before the blocker, nothing blocks.
+          EXPECT_FALSE(accel->anyHit(ray, Interval{0.0, h.t}, nullptr));
+          // Skipping the blocker: any-hit is exactly "is there another one".
+          Hit second;
+          EXPECT_EQ(accel->anyHit(ray, range, &h.primitive),
+                    accel->closestHit(ray, range, &h.primitive, second));
+        }
+        (blocked ? occluded : clear) += kind == AccelKind::Bvh;
+      }
+    }
+  }
+  EXPECT_GT(occluded, 500);
+  EXPECT_GT(clear, 500);
+  (void)u;
+}
+
+TEST(Accel, GeneratedScenesMatchBruteForce) {
+  std::mt19937 rng(2025);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Tally tally;
+  for (const Scene& scene : {makePolygonSoup(3000, 7), makeSphereflake(820)}) {
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    for (int i = 0; i < 600; ++i) {
+      const Vec3 from(3 * u(rng), 3 * u(rng), 3 * u(rng));
+      const Vec3 to(u(rng), u(rng), u(rng));
+      const Ray ray{from, i % 3 == 0 ? randomDirection(rng) : glm::normalize(to - from)};
+      Hit h;
+      if (expectSameHit(scene, accels, *brute, ray, Interval{}, nullptr, tally, &h)) {
+        const Ray onSurface{ray.at(h.t), randomDirection(rng)};
+        expectSameHit(scene, accels, *brute, onSurface, Interval{},
+                      h.primitive.kind == PrimitiveKind::Polygon ? &h.primitive : nullptr, tally);
+      }
+    }
+  }
+  EXPECT_GT(tally.hits, 500);
+}
+
+TEST(Accel, DegenerateInputs) {
+  Tally tally;
+  // No primitives at all.
+  {
+    const Scene empty;
+    for (AccelKind kind : {AccelKind::Bvh, AccelKind::Groups, AccelKind::None}) {
+      const auto accel = makeAccel(empty, kind);
+      Hit h;
+      EXPECT_FALSE(accel->closestHit(Ray{Vec3(0.0), Vec3(0, 0, 1)}, Interval{}, nullptr, h));
+      EXPECT_FALSE(accel->anyHit(Ray{Vec3(0.0), Vec3(0, 0, 1)}, Interval{}, nullptr));
+    }
+  }
+  // One primitive: the root is a leaf.
+  {
+    Scene scene;
+    const std::uint32_t mat = addMaterial(scene, Material{});
+    addSphere(scene, Vec3(0, 0, -5), 1.0, mat);
+    const auto bvh = makeAccel(scene, AccelKind::Bvh);
+    Hit h;
+    ASSERT_TRUE(bvh->closestHit(Ray{Vec3(0.0), Vec3(0, 0, -1)}, Interval{}, nullptr, h));
+    EXPECT_EQ(h.t, 4.0);
+    EXPECT_FALSE(bvh->anyHit(Ray{Vec3(0.0), Vec3(0, 0, 1)}, Interval{}, nullptr));
+  }
+  // 200 identical spheres (centroids cannot be told apart: median splits), and
+  // spheres at exponentially growing distances (SAH would make a deep chain).
+  {
+    Scene scene;
+    const std::uint32_t mat = addMaterial(scene, Material{});
+    for (int i = 0; i < 200; ++i)
+      addSphere(scene, Vec3(1, 2, 3), 0.5, mat);
+    for (int i = 0; i < 300; ++i)
+      addSphere(scene, Vec3(std::ldexp(1.0, i / 4), 0, 0), 0.25, mat);
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 500; ++i) {
+      const Vec3 target = i % 2 == 0 ? Vec3(1, 2, 3) : Vec3(std::ldexp(1.0, i % 60), 0, 0);
+      const Vec3 from = target + Vec3(5 * u(rng), 5 * u(rng), 5 * u(rng));
+      if (from == target) continue;
+      expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(target - from)}, Interval{},
+                    nullptr, tally);
+    }
+    EXPECT_GT(tally.ties, 400); // every hit on the 200 copies is a tie
+  }
+}
+
+TEST(SahBuilder, EveryBoxInExactlyOneLeafInsideItsAncestors) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 5000; ++i) {
+    Aabb b;
+    const Vec3 c(100 * u(rng), 10 * u(rng), u(rng));
+    b.extend(c);
+    b.extend(c + Vec3(std::abs(u(rng)), std::abs(u(rng)), i % 7 == 0 ? 0.0 : std::abs(u(rng))));
+    boxes.push_back(b);
+  }
+  const SahTree tree = buildSahTree(boxes);
+  ASSERT_FALSE(tree.nodes.empty());
+  std::vector<int> seen(boxes.size(), 0);
+  // Walk from the root, checking containment.
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const SahTree::Node& n = tree.nodes[stack.back()];
+    stack.pop_back();
+    if (n.leaf()) {
+      EXPECT_LE(n.count, SahOptions{}.maxLeaf);
+      for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+        const Aabb& b = boxes[tree.order[i]];
+        ++seen[tree.order[i]];
+        for (int a = 0; a < 3; ++a) {
+          EXPECT_LE(n.box.lo[a], b.lo[a]);
+          EXPECT_GE(n.box.hi[a], b.hi[a]);
+        }
+      }
+      continue;
+    }
+    for (std::uint32_t c : {n.left, n.right}) {
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_LE(n.box.lo[a], tree.nodes[c].box.lo[a]);
+        EXPECT_GE(n.box.hi[a], tree.nodes[c].box.hi[a]);
+      }
+      stack.push_back(c);
+    }
+  }
+  for (int s : seen)
+    EXPECT_EQ(s, 1);
+  EXPECT_LT(tree.depth, 60);
+}
+
+TEST(Bvh, AtMost64BytesPerPrimitive) {
+  for (const Scene& scene : {makePolygonSoup(20000, 3), makeSphereflake(20000)}) {
+    const Bvh bvh(scene);
+    EXPECT_LE(double(bvh.memoryBytes()) / double(scene.primitiveCount()), 64.0);
+    EXPECT_GT(bvh.nodeCount(), 0u);
+  }
+}
+
+} // namespace
+} // namespace prism

@@ -1,0 +1,203 @@
+// The previewer end to end, in a real window: each test starts its own X server
+// (xvfb-run, so it runs the same with or without a display, and under CI), where
+// Mesa's llvmpipe provides OpenGL, and drives `prism view --script`. Scripts
+// synchronise on events (wait pass1, wait done, echo), never on sleeps.
+#include "view_test_util.h"
+
+#include <cstdio>
+
+namespace prism::test {
+namespace {
+
+const std::string kPrism = std::string("'") + PRISM_BINARY + "'";
+const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
+
+// Two spheres (one a mirror) on a checker-free floor, two lights at top level
+// (no transform, so `light 1 X Y Z` in a script equals the same line in a file).
+std::string scene(const std::string& light1) {
+  return "eye 0 1.5 6\nlookat 0 0.3 0\nfov 40\nresolution 160 120\n"
+         "ambient 0.05 0.05 0.05\n"
+         "light " + light1 + "  40 38 34\n"
+         "light -4 5 3  20 22 26\n"
+         "surface 0.9 0.3 0.2  0.8 0.3 0  40 1\nsphere -0.8 0.3 0 0.8\n"
+         "surface 0.9 0.9 0.9  0.1 0.8 0  200 1\nsphere 1 0.2 -0.5 0.7\n"
+         "surface 0.4 0.6 0.8  0.9 0.1 0  10 1\n"
+         "polygon 4  -6 -0.5 -6  -6 -0.5 6  6 -0.5 6  6 -0.5 -6\n";
+}
+
+// The panel (right of the image) shows widgets and text: many colours, not one.
+int distinctColours(const Picture& p, int x0, int x1) {
+  std::vector<bool> seen(1 << 24, false);
+  int count = 0;
+  for (int y = 0; y < p.height; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* c = p.at(x, y);
+      const int key = (c[0] << 16) | (c[1] << 8) | c[2];
+      if (!seen[std::size_t(key)]) {
+        seen[std::size_t(key)] = true;
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
+TEST(ViewE2E, ScriptedSessionShowsTheImageAndSavesWhatRenderWrites) {
+  ScratchDir dir;
+  writeFile(dir / "a.sc", scene("3 4 4"));
+  writeFile(dir / "b.sc", scene("-1 3 5")); // a.sc after the script's light edit
+  writeFile(dir / "s.txt", R"(# A session a user could have: look, change settings, move a light, save.
+wait coarse
+wait pass1
+depth 3
+thresh 0.05
+light 1 -1 3 5
+markers off
+wait done
+screenshot shot.png
+save saved.tiff
+overlay on
+markers on
+screenshot overlay.png
+quit
+)");
+  const RunResult r = run(dir.path(), kXvfb + kPrism + " view a.sc --script s.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+
+  const RunResult ref =
+      run(dir.path(), kPrism + " render b.sc -o ref.tiff --depth 3 --thresh 0.05 -q");
+  ASSERT_EQ(ref.exitCode, 0) << ref.err;
+  const auto reference = readPicture(dir / "ref.tiff");
+  const auto saved = readPicture(dir / "saved.tiff");
+  ASSERT_TRUE(reference && saved);
+  EXPECT_EQ(saved->width, 160);
+  EXPECT_TRUE(sameRgb(*saved, *reference)) << "Save differs from prism render";
+
+  // The window shows exactly the exposed picture at 1:1 ...
+  const auto shot = readPicture(dir / "shot.png");
+  ASSERT_TRUE(shot);
+  const auto at = findExact(*shot, *reference);
+  ASSERT_TRUE(at) << "the rendered image is not in the screenshot";
+  // ... left of a control panel that is not blank.
+  const int panelStart = at->first + reference->width;
+  EXPECT_GT(shot->width - panelStart, 300);
+  EXPECT_GT(distinctColours(*shot, panelStart, shot->width), 20);
+
+  // With the overlay and the markers, some pixels of the image change, not all.
+  const auto overlay = readPicture(dir / "overlay.png");
+  ASSERT_TRUE(overlay);
+  int changed = 0;
+  for (int y = 0; y < reference->height; ++y)
+    for (int x = 0; x < reference->width; ++x)
+      changed += overlay->at(at->first + x, at->second + y)[0] != reference->at(x, y)[0] ||
+                 overlay->at(at->first + x, at->second + y)[1] != reference->at(x, y)[1];
+  EXPECT_GT(changed, 0);
+  EXPECT_LT(changed, reference->width * reference->height / 2);
+
+  // The frame-time report of a scripted session.
+  const std::size_t report = r.out.find("frames while rendering: ");
+  ASSERT_NE(report, std::string::npos) << r.out;
+  unsigned frames = 0;
+  double seconds = 0.0, fps = 0.0;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + report, "frames while rendering: %u in %lf s = %lf fps",
+                        &frames, &seconds, &fps),
+            3)
+      << r.out;
+  EXPECT_GT(frames, 0u);
+  std::printf("%s", r.out.c_str() + report);
+}
+
+// Reads the app's stdout line by line while it runs, so the test can edit the
+// scene exactly when the script says it is ready.
+class Session {
+public:
+  explicit Session(const std::string& command) : pipe_(popen(command.c_str(), "r")) {}
+  ~Session() {
+    if (pipe_) pclose(pipe_);
+  }
+  // The next line of stdout, or nothing at the end.
+  std::optional<std::string> line() {
+    char buffer[4096];
+    if (!pipe_ || !std::fgets(buffer, sizeof buffer, pipe_)) return std::nullopt;
+    std::string text = buffer;
+    if (!text.empty() && text.back() == '\n') text.pop_back();
+    return text;
+  }
+  int close() {
+    const int status = pclose(pipe_);
+    pipe_ = nullptr;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+private:
+  FILE* pipe_;
+};
+
+TEST(ViewE2E, ReloadsWhenAFileChangesAndKeepsTheLastGoodSceneOnErrors) {
+  ScratchDir dir;
+  // The lights live in an included file: a change there must be noticed too.
+  const std::string full = scene("3 4 4");
+  const std::size_t lights = full.find("light ");
+  const std::size_t afterLights = full.find("surface");
+  writeFile(dir / "main.sc", full.substr(0, lights) + "include lights.sc\n" + full.substr(afterLights));
+  writeFile(dir / "lights.sc", full.substr(lights, afterLights - lights));
+  writeFile(dir / "good.sc", full);
+  writeFile(dir / "s.txt", R"(wait done
+markers off
+echo ready
+wait error
+screenshot broken.png
+echo broken
+wait reload
+wait done
+save fixed.tiff
+quit
+)");
+  Session session("cd " + quoted(dir.path()) + " && " + kXvfb + kPrism +
+                  " view main.sc --depth 2 --script s.txt 2>stderr.txt");
+  std::string output;
+  while (const auto line = session.line()) {
+    output += *line + "\n";
+    if (*line == "ready") writeFile(dir / "lights.sc", "light 1 2 oops\n");
+    if (*line == "broken") writeFile(dir / "lights.sc", "light -2 4 5  50 50 50\n");
+  }
+  ASSERT_EQ(session.close(), 0) << output << slurp(dir / "stderr.txt");
+
+  // The error was reported with its location ...
+  const std::string err = slurp(dir / "stderr.txt");
+  EXPECT_NE(err.find("lights.sc:1:11: error:"), std::string::npos) << err;
+  // ... while the window kept showing the last good picture.
+  ASSERT_EQ(run(dir.path(), kPrism + " render good.sc -o good.tiff --depth 2 -q").exitCode, 0);
+  const auto good = readPicture(dir / "good.tiff");
+  const auto broken = readPicture(dir / "broken.png");
+  ASSERT_TRUE(good && broken);
+  EXPECT_TRUE(findExact(*broken, *good)) << "the last good scene is not on screen";
+
+  // The fixed scene was picked up by itself, and Save wrote its picture.
+  writeFile(dir / "fixed.sc", full.substr(0, lights) + "light -2 4 5  50 50 50\n" +
+                                  full.substr(afterLights));
+  ASSERT_EQ(run(dir.path(), kPrism + " render fixed.sc -o ref.tiff --depth 2 -q").exitCode, 0);
+  const auto reference = readPicture(dir / "ref.tiff");
+  const auto fixed = readPicture(dir / "fixed.tiff");
+  ASSERT_TRUE(reference && fixed);
+  EXPECT_TRUE(sameRgb(*fixed, *reference));
+}
+
+TEST(ViewE2E, ScriptErrorsAreReportedWithTheirLine) {
+  ScratchDir dir;
+  writeFile(dir / "a.sc", scene("3 4 4"));
+  writeFile(dir / "bad.txt", "wait pass1\nfly away\n");
+  const RunResult parse = run(dir.path(), kXvfb + kPrism + " view a.sc --script bad.txt");
+  EXPECT_EQ(parse.exitCode, 2);
+  EXPECT_NE(parse.err.find("bad.txt:2:1: error: unknown action 'fly'"), std::string::npos)
+      << parse.err;
+  writeFile(dir / "light.txt", "wait coarse\nlight 9 0 0 0\nquit\n");
+  const RunResult runtime = run(dir.path(), kXvfb + kPrism + " view a.sc --script light.txt");
+  EXPECT_EQ(runtime.exitCode, 1);
+  EXPECT_NE(runtime.err.find("script line 2 (light 9 0 0 0): there is no light 9 (the scene has 2)"),
+            std::string::npos)
+      << runtime.err;
+}
+
+} // namespace
+} // namespace prism::test

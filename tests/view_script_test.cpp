@@ -1,0 +1,182 @@
+// The previewer's script language: every action parses to what it says, bad
+// lines are reported with file, line and column, and the runner waits for
+// actions to complete and enforces the timeout.
+#include "viewer/view_script.h"
+
+#include <gtest/gtest.h>
+
+namespace prism {
+namespace {
+
+std::vector<Diagnostic> errorsOf(const std::string& text) {
+  try {
+    parseScript(text, "s.txt");
+  } catch (const SceneError& error) {
+    return error.diagnostics();
+  }
+  return {};
+}
+
+TEST(ViewScript, ParsesEveryAction) {
+  const auto a = parseScript(R"(# a comment line
+wait pass1
+  wait   done   # trailing comment
+wait coarse
+wait reload
+wait error
+frames 3
+timeout 2.5
+depth 3
+thresh 0.05
+jitter on
+ambient 0.1 0.2 0.3
+light 2 1 -2 3.5
+intensity 1 10 20 30
+orbit 15 -5
+pan 4 -2
+zoom 0.8
+reset
+overlay off
+markers on
+reload
+save out dir/picture one.tiff
+screenshot shot.png
+echo ready for the edit
+quit
+)",
+                             "s.txt");
+  ASSERT_EQ(a.size(), 24u);
+  EXPECT_EQ(a[0].op, ScriptOp::Wait);
+  EXPECT_EQ(a[0].waitFor, WaitFor::Pass1);
+  EXPECT_EQ(a[0].line, 2);
+  EXPECT_EQ(a[1].waitFor, WaitFor::Done);
+  EXPECT_EQ(a[2].waitFor, WaitFor::Coarse);
+  EXPECT_EQ(a[3].waitFor, WaitFor::Reload);
+  EXPECT_EQ(a[4].waitFor, WaitFor::Error);
+  EXPECT_EQ(a[5].op, ScriptOp::Frames);
+  EXPECT_EQ(a[5].index, 3);
+  EXPECT_EQ(a[6].values, std::vector<double>({2.5}));
+  EXPECT_EQ(a[7].op, ScriptOp::Depth);
+  EXPECT_EQ(a[7].index, 3);
+  EXPECT_EQ(a[8].values, std::vector<double>({0.05}));
+  EXPECT_EQ(a[9].values, std::vector<double>({1.0}));
+  EXPECT_EQ(a[10].values, std::vector<double>({0.1, 0.2, 0.3}));
+  EXPECT_EQ(a[11].op, ScriptOp::Light);
+  EXPECT_EQ(a[11].index, 2);
+  EXPECT_EQ(a[11].values, std::vector<double>({1.0, -2.0, 3.5}));
+  EXPECT_EQ(a[12].op, ScriptOp::Intensity);
+  EXPECT_EQ(a[12].values, std::vector<double>({10.0, 20.0, 30.0}));
+  EXPECT_EQ(a[13].values, std::vector<double>({15.0, -5.0}));
+  EXPECT_EQ(a[14].values, std::vector<double>({4.0, -2.0}));
+  EXPECT_EQ(a[15].values, std::vector<double>({0.8}));
+  EXPECT_EQ(a[16].op, ScriptOp::Reset);
+  EXPECT_EQ(a[17].values, std::vector<double>({0.0}));
+  EXPECT_EQ(a[18].values, std::vector<double>({1.0}));
+  EXPECT_EQ(a[19].op, ScriptOp::Reload);
+  EXPECT_EQ(a[20].path, "out dir/picture one.tiff"); // paths may hold spaces
+  EXPECT_EQ(a[21].path, "shot.png");
+  EXPECT_EQ(a[22].path, "ready for the edit");
+  EXPECT_EQ(a[23].op, ScriptOp::Quit);
+  EXPECT_EQ(a[23].line, 25);
+}
+
+TEST(ViewScript, ReportsEveryBadLineWithItsPosition) {
+  const auto errors = errorsOf("wait pass1\n"
+                               "  jump 3\n"
+                               "wait forever\n"
+                               "depth 0\n"
+                               "depth 2.5\n"
+                               "thresh 1.5\n"
+                               "light 1 2 3\n"
+                               "light 1 2 3 x\n"
+                               "intensity 1 1 -1 1\n"
+                               "jitter maybe\n"
+                               "save\n"
+                               "quit now\n"
+                               "zoom 0\n"
+                               "ambient nan 0 0\n");
+  ASSERT_EQ(errors.size(), 13u);
+  EXPECT_EQ(errors[0].format(), "s.txt:2:3: error: unknown action 'jump'");
+  EXPECT_EQ(errors[1].format(),
+            "s.txt:3:6: error: wait: expected coarse, pass1, done, reload or error, got 'forever'");
+  EXPECT_EQ(errors[2].format(), "s.txt:4:7: error: depth must be in [1, 1000], got 0");
+  EXPECT_EQ(errors[3].format(), "s.txt:5:7: error: depth: expected an integer, got 2.5");
+  EXPECT_EQ(errors[4].format(), "s.txt:6:8: error: thresh must be in [0, 1], got 1.5");
+  EXPECT_EQ(errors[5].format(), "s.txt:7:1: error: light: expected N X Y Z, got 3 arguments");
+  EXPECT_EQ(errors[6].format(),
+            "s.txt:8:13: error: light position: expected a number, got 'x'");
+  EXPECT_EQ(errors[7].line, 9);
+  EXPECT_EQ(errors[8].format(), "s.txt:10:8: error: expected on or off, got 'maybe'");
+  EXPECT_EQ(errors[9].format(), "s.txt:11:1: error: save: expected PATH");
+  EXPECT_EQ(errors[10].format(),
+            "s.txt:12:6: error: quit: expected no arguments, got 1 argument");
+  EXPECT_EQ(errors[11].line, 13);
+  EXPECT_EQ(errors[12].line, 14);
+}
+
+TEST(ViewScript, MissingFileIsAnError) {
+  EXPECT_THROW(loadScript("/nonexistent/script.txt"), SceneError);
+}
+
+// A host that completes an action after a given number of polls and logs calls.
+class FakeHost : public ScriptHost {
+public:
+  int pollsNeeded = 0;
+  std::vector<std::string> log;
+  int polls = 0;
+
+  void start(const ScriptAction& a) override {
+    log.push_back("start " + a.text);
+    polls = 0;
+  }
+  bool finished(const ScriptAction& a) override {
+    if (a.op != ScriptOp::Wait) return true;
+    return ++polls > pollsNeeded;
+  }
+};
+
+TEST(ViewScript, RunnerWaitsFrameByFrameAndStopsAtQuit) {
+  ScriptRunner runner(parseScript("depth 2\nwait done\nthresh 0.5\nquit\ndepth 9\n", "s"));
+  FakeHost host;
+  host.pollsNeeded = 2;
+  const auto t0 = ScriptRunner::Clock::now();
+  EXPECT_TRUE(runner.step(host, t0)); // depth 2 runs, the wait starts and is not reached
+  EXPECT_EQ(host.log, std::vector<std::string>({"start depth 2", "start wait done"}));
+  EXPECT_TRUE(runner.step(host, t0));
+  EXPECT_FALSE(runner.step(host, t0)); // reached; thresh and quit run; nothing after quit
+  EXPECT_EQ(host.log.size(), 4u);
+  EXPECT_EQ(host.log[3], "start quit");
+  EXPECT_TRUE(runner.done());
+}
+
+TEST(ViewScript, RunnerTimesOutAWaitThatNeverCompletes) {
+  ScriptRunner runner(parseScript("timeout 1\nwait pass1\n", "s"));
+  FakeHost host;
+  host.pollsNeeded = 1000000;
+  const auto t0 = ScriptRunner::Clock::now();
+  EXPECT_TRUE(runner.step(host, t0));
+  EXPECT_TRUE(runner.step(host, t0 + std::chrono::milliseconds(900)));
+  try {
+    runner.step(host, t0 + std::chrono::milliseconds(1100));
+    FAIL() << "no timeout";
+  } catch (const std::runtime_error& error) {
+    EXPECT_STREQ(error.what(), "script line 2 (wait pass1): did not complete within 1 s");
+  }
+}
+
+TEST(ViewScript, HostFailuresNameTheLine) {
+  class Failing : public ScriptHost {
+    void start(const ScriptAction&) override { throw std::runtime_error("there is no light 7"); }
+    bool finished(const ScriptAction&) override { return true; }
+  } host;
+  ScriptRunner runner(parseScript("\n\nlight 7 0 0 0\n", "s"));
+  try {
+    runner.step(host);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_STREQ(error.what(), "script line 3 (light 7 0 0 0): there is no light 7");
+  }
+}
+
+} // namespace
+} // namespace prism

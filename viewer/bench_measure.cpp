@@ -1,0 +1,169 @@
+#include "bench_measure.h"
+
+#include "core/camera.h"
+#include "core/parallel.h"
+#include "core/system_info.h"
+#include "core/tracer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+
+namespace prism {
+
+namespace {
+
+// Passes every query through to another Accel and keeps a copy of the shadow
+// (anyHit) and secondary (closestHit after the eye ray's own) queries.
+class RecordingAccel final : public Accel {
+public:
+  RecordingAccel(const Accel& inner, RaySet& rays, std::size_t cap)
+      : inner_(inner), rays_(rays), cap_(cap) {}
+
+  void nextIsEyeRay() { eyeRayNext_ = true; }
+
+  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                  Hit& hit) const override {
+    if (eyeRayNext_) {
+      eyeRayNext_ = false;
+    } else if (rays_.secondary.size() < cap_) {
+      rays_.secondary.push_back(query(ray, range, skip));
+    }
+    return inner_.closestHit(ray, range, skip, hit);
+  }
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override {
+    if (rays_.shadow.size() < cap_) rays_.shadow.push_back(query(ray, range, skip));
+    return inner_.anyHit(ray, range, skip);
+  }
+  std::size_t memoryBytes() const override { return inner_.memoryBytes(); }
+
+private:
+  static RayQuery query(const Ray& ray, Interval range, const PrimitiveRef* skip) {
+    RayQuery q{ray, range, {}, skip != nullptr};
+    if (skip != nullptr) q.skip = *skip;
+    return q;
+  }
+
+  const Accel& inner_;
+  RaySet& rays_;
+  std::size_t cap_;
+  mutable bool eyeRayNext_ = false;
+};
+
+using Clock = std::chrono::steady_clock;
+
+// Runs work(i) -> (rays traced, hit?) over queries [0, n) with the given stride,
+// on `threads` threads, and returns rays per second.
+template <class Work>
+Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& work) {
+  Throughput result;
+  if (n == 0) return result;
+  // A probe of up to 64 queries spread over the set estimates the whole cost.
+  const std::size_t probeStride = std::max<std::size_t>(1, n / 64);
+  const double probeStart = threadCpuSeconds();
+  std::size_t probed = 0;
+  for (std::size_t i = 0; i < n; i += probeStride, ++probed)
+    (void)work(i);
+  const double perQuery = (threadCpuSeconds() - probeStart) / double(probed);
+  std::size_t stride = 1;
+  if (perQuery * double(n) > budgetSeconds * double(threads)) {
+    stride = std::size_t(std::ceil(perQuery * double(n) / (budgetSeconds * double(threads))));
+    result.sampled = true;
+  }
+  const std::size_t count = (n + stride - 1) / stride;
+  constexpr std::size_t kChunk = 256;
+  const int chunks = int((count + kChunk - 1) / kChunk);
+  std::vector<std::uint64_t> rays(std::size_t(threads), 0), hits(std::size_t(threads), 0);
+  auto chunk = [&](int c, int worker) {
+    const std::size_t end = std::min(count, (std::size_t(c) + 1) * kChunk);
+    for (std::size_t k = std::size_t(c) * kChunk; k < end; ++k) {
+      const auto [r, h] = work(k * stride);
+      rays[std::size_t(worker)] += r;
+      hits[std::size_t(worker)] += h ? 1 : 0;
+    }
+  };
+  double seconds;
+  if (threads == 1) {
+    const double start = threadCpuSeconds();
+    for (int c = 0; c < chunks; ++c)
+      chunk(c, 0);
+    seconds = threadCpuSeconds() - start;
+  } else {
+    const auto start = Clock::now();
+    parallelFor(chunks, threads, chunk);
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  std::uint64_t totalRays = 0, totalHits = 0;
+  for (int w = 0; w < threads; ++w) {
+    totalRays += rays[std::size_t(w)];
+    totalHits += hits[std::size_t(w)];
+  }
+  result.raysPerSecond = seconds > 0.0 ? double(totalRays) / seconds : 0.0;
+  result.hitShare = double(totalHits) / double(count);
+  return result;
+}
+
+} // namespace
+
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+}
+
+RaySet recordRays(const Scene& scene, const Accel& accel, int width, int height, int maxDepth,
+                  std::size_t cap) {
+  RaySet rays;
+  RecordingAccel recorder(accel, rays, cap);
+  const Camera camera(scene.camera, width, height);
+  const Tracer tracer(scene, recorder, maxDepth);
+  RayCounts counts;
+  rays.eye.reserve(std::size_t(width) * std::size_t(height));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Ray ray = camera.eyeRay(x + 0.5, y + 0.5);
+      rays.eye.push_back({ray, Interval{}, {}, false});
+      recorder.nextIsEyeRay();
+      tracer.trace(ray, 1, counts);
+    }
+  }
+  return rays;
+}
+
+Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queries, bool anyHit,
+                          int threads, double budgetSeconds) {
+  return run(queries.size(), threads, budgetSeconds, [&](std::size_t i) {
+    const RayQuery& q = queries[i];
+    const PrimitiveRef* skip = q.hasSkip ? &q.skip : nullptr;
+    Hit hit;
+    const bool found =
+        anyHit ? accel.anyHit(q.ray, q.range, skip) : accel.closestHit(q.ray, q.range, skip, hit);
+    return std::pair<std::uint64_t, bool>(1, found);
+  });
+}
+
+Throughput measureShaded(const Scene& scene, const Accel& accel, const std::vector<RayQuery>& eye,
+                         int maxDepth, int threads, double budgetSeconds) {
+  const Tracer tracer(scene, accel, maxDepth);
+  return run(eye.size(), threads, budgetSeconds, [&](std::size_t i) {
+    RayCounts counts;
+    ++counts.eyePrimary;
+    const Color c = tracer.trace(eye[i].ray, 1, counts);
+    return std::pair<std::uint64_t, bool>(counts.total(), c != scene.background);
+  });
+}
+
+RenderTiming timeRender(const Scene& scene, const Accel& accel, const RenderSettings& settings) {
+  RenderTiming timing;
+  const double cpuStart = processCpuSeconds();
+  const auto start = Clock::now();
+  const RenderResult result = render(scene, accel, settings);
+  timing.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  timing.cpuSeconds = processCpuSeconds() - cpuStart;
+  timing.counts = result.counts;
+  return timing;
+}
+
+} // namespace prism

@@ -1,0 +1,315 @@
+#include "view_app.h"
+
+#include "gl.h" // before GLFW, which would otherwise include GL/gl.h itself
+
+#include "camera_controls.h"
+#include "display.h"
+#include "frame_stats.h"
+#include "image_view.h"
+#include "panels.h"
+
+#include "core/image_io.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace prism {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Under Xvfb (and with many drivers) the swap interval does not throttle, so the
+// loop waits for events until the next frame is due: 60 frames a second at most,
+// and an idle window costs nothing.
+constexpr double kFrameSeconds = 1.0 / 60.0;
+
+std::string lastGlfwError;
+
+void rememberGlfwError(int code, const char* description) {
+  lastGlfwError = description ? description : "GLFW error " + std::to_string(code);
+}
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// A window of the right size for the image and the panel, within the screen.
+GLFWwindow* createWindow(const Scene& scene, const RenderSettings& s) {
+  glfwDefaultWindowHints();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  int width = s.width + int(kPanelWidth);
+  int height = std::max(s.height + int(kStatusHeight), 760);
+  if (const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor())) {
+    width = std::min(width, mode->width);
+    height = std::min(height, mode->height);
+  }
+  const std::string title = "Prism - " + (scene.files.empty() ? std::string() : scene.files[0]);
+  return glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+}
+
+void styleImGui() {
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.0f;
+  style.FrameRounding = 3.0f;
+  style.GrabRounding = 3.0f;
+  style.WindowBorderSize = 0.0f;
+  style.ItemSpacing = ImVec2(8.0f, 5.0f);
+  style.WindowPadding = ImVec2(10.0f, 10.0f);
+  style.Colors[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.11f, 0.125f, 1.0f);
+  style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.52f, 0.90f, 1.0f); // progress bars
+}
+
+// The previewer while its window is open. Also the host of a scripted session:
+// a script's actions go through the same controller calls as the panel's.
+class ViewApp : public ScriptHost {
+public:
+  ViewApp(GLFWwindow* window, Scene scene, const ViewAppOptions& options)
+      : window_(window), controller_(std::move(scene), options.view) {
+    panel_.savePath = options.view.savePath;
+    if (options.script) script_.emplace(*options.script);
+  }
+
+  int run();
+
+  void start(const ScriptAction& action) override;
+  bool finished(const ScriptAction& action) override;
+
+private:
+  void frame();
+  void takeScreenshot(int width, int height);
+  RenderSettings edited(const ScriptAction& a) const;
+  std::size_t lightIndex(const ScriptAction& a) const;
+
+  GLFWwindow* window_;
+  ViewController controller_;
+  ImageDisplay display_;
+  PanelState panel_;
+  FrameStats frames_;
+  std::optional<ScriptRunner> script_;
+  bool quit_ = false;
+  std::uint64_t frameNumber_ = 0;
+  std::uint64_t framesAtStart_ = 0; // for `frames N`
+  std::string screenshotPath_;      // taken at the end of this frame
+  bool screenshotTaken_ = false;
+  int reloadsSeen_ = 0;             // for `wait reload` / `wait error`
+  int errorsSeen_ = 0;
+};
+
+int ViewApp::run() {
+  Clock::time_point previous = Clock::now();
+  while (!glfwWindowShouldClose(window_) && !quit_ && !panel_.quit) {
+    const Clock::time_point begin = Clock::now();
+    const bool rendering = controller_.progress().phase != SessionPhase::Done;
+    try {
+      frame();
+    } catch (const std::runtime_error& error) {
+      std::cerr << "prism: error: " << error.what() << "\n";
+      std::cout << frames_.summary() << std::endl;
+      return 1;
+    }
+    const Clock::time_point end = Clock::now();
+    if (frameNumber_ > 1) // the first frame has no interval yet
+      frames_.record(seconds(begin - previous), seconds(end - begin), rendering);
+    previous = begin;
+    const Clock::time_point due = begin + std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(kFrameSeconds));
+    for (Clock::time_point now = end; now < due && !glfwWindowShouldClose(window_);
+         now = Clock::now())
+      glfwWaitEventsTimeout(seconds(due - now));
+    glfwPollEvents();
+  }
+  if (script_) std::cout << frames_.summary() << std::endl;
+  return 0;
+}
+
+void ViewApp::frame() {
+  if (controller_.update()) {
+    const SessionImage& image = controller_.image();
+    display_.upload(image.width, image.height, image.radiance, image.supersampled);
+  }
+  if (script_) script_->step(*this); // may edit, save, request a screenshot or quit
+
+  int fbWidth = 0, fbHeight = 0;
+  glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  const ImageLayout layout =
+      layoutImage(size.x, size.y, kPanelWidth, display_.width(), display_.height());
+  handleShortcuts(controller_, panel_);
+  navigateWithMouse(controller_, layout);
+  drawControlPanel(controller_, panel_, frames_, size.x, size.y);
+  if (panel_.markers) drawLightMarkers(controller_, layout);
+  drawStatusLine(controller_, layout);
+  ImGui::Render();
+
+  glViewport(0, 0, fbWidth, fbHeight);
+  glClearColor(0.07f, 0.075f, 0.085f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  DisplayView view;
+  // Window coordinates run down from the top; GL's up from the bottom.
+  const float framebufferScale = size.x > 0.0f ? float(fbWidth) / size.x : 1.0f;
+  view.zoom = layout.zoom * framebufferScale;
+  view.x = int(layout.left * framebufferScale);
+  view.y = fbHeight - int((layout.top + float(display_.height()) * layout.zoom) * framebufferScale);
+  view.scale = controller_.exposure();
+  view.overlay = panel_.overlay;
+  display_.draw(view);
+  glViewport(0, 0, fbWidth, fbHeight);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+  if (!screenshotPath_.empty()) takeScreenshot(fbWidth, fbHeight);
+  glfwSwapBuffers(window_);
+  ++frameNumber_;
+}
+
+void ViewApp::takeScreenshot(int width, int height) {
+  glReadBuffer(GL_BACK); // this frame, drawn but not yet swapped
+  const std::string path = std::move(screenshotPath_);
+  screenshotPath_.clear();
+  writeImage8(path, width, height, readPixelsRgb(0, 0, width, height));
+  screenshotTaken_ = true;
+}
+
+RenderSettings ViewApp::edited(const ScriptAction& a) const {
+  RenderSettings s = controller_.settings();
+  if (a.op == ScriptOp::Depth) s.maxDepth = a.index;
+  if (a.op == ScriptOp::Thresh) s.thresh = a.values[0];
+  if (a.op == ScriptOp::Jitter) s.jitter = a.values[0] != 0.0;
+  return s;
+}
+
+std::size_t ViewApp::lightIndex(const ScriptAction& a) const {
+  const std::size_t count = controller_.scene().lights.size();
+  if (a.index < 1 || std::size_t(a.index) > count)
+    throw std::runtime_error("there is no light " + std::to_string(a.index) + " (the scene has " +
+                             std::to_string(count) + ")");
+  return std::size_t(a.index - 1);
+}
+
+void ViewApp::start(const ScriptAction& a) {
+  const auto vec = [&](std::size_t first) {
+    return Vec3(a.values[first], a.values[first + 1], a.values[first + 2]);
+  };
+  const CameraSpec& camera = controller_.scene().camera;
+  switch (a.op) {
+  case ScriptOp::Wait:
+  case ScriptOp::Timeout: break;
+  case ScriptOp::Frames: framesAtStart_ = frameNumber_; break;
+  case ScriptOp::Depth:
+  case ScriptOp::Thresh:
+  case ScriptOp::Jitter: controller_.setSettings(edited(a)); break;
+  case ScriptOp::Ambient: controller_.setAmbient(vec(0)); break;
+  case ScriptOp::Light:
+  case ScriptOp::Intensity: {
+    const std::size_t i = lightIndex(a);
+    Light light = controller_.scene().lights[i];
+    (a.op == ScriptOp::Light ? light.position : light.intensity) = vec(0);
+    controller_.setLight(i, light);
+    break;
+  }
+  case ScriptOp::Orbit: controller_.setCamera(orbit(camera, a.values[0], a.values[1])); break;
+  case ScriptOp::Pan:
+    controller_.setCamera(pan(camera, a.values[0], a.values[1], controller_.settings().height));
+    break;
+  case ScriptOp::Zoom: controller_.setCamera(zoom(camera, a.values[0])); break;
+  case ScriptOp::Reset: controller_.resetCamera(); break;
+  case ScriptOp::Overlay: panel_.overlay = a.values[0] != 0.0; break;
+  case ScriptOp::Markers: panel_.markers = a.values[0] != 0.0; break;
+  case ScriptOp::Reload: controller_.reload(); break;
+  case ScriptOp::Save: controller_.save(a.path); break;
+  case ScriptOp::Screenshot:
+    screenshotPath_ = a.path;
+    screenshotTaken_ = false;
+    break;
+  case ScriptOp::Echo: std::cout << a.path << std::endl; break;
+  case ScriptOp::Quit: quit_ = true; break;
+  }
+}
+
+bool ViewApp::finished(const ScriptAction& a) {
+  // Between an edit and the next update() the snapshot still shows the old render.
+  const bool current = controller_.snapshotCurrent();
+  const SessionProgress& p = controller_.progress();
+  switch (a.op) {
+  case ScriptOp::Wait:
+    switch (a.waitFor) {
+    case WaitFor::Coarse: return current && p.pass1Pixels > 0;
+    case WaitFor::Pass1: return current && p.phase != SessionPhase::Coarse;
+    case WaitFor::Done: return current && p.phase == SessionPhase::Done;
+    case WaitFor::Reload:
+      if (controller_.successfulReloads() <= reloadsSeen_) return false;
+      reloadsSeen_ = controller_.successfulReloads();
+      return true;
+    case WaitFor::Error:
+      if (controller_.failedReloads() <= errorsSeen_) return false;
+      errorsSeen_ = controller_.failedReloads();
+      return true;
+    }
+    return false;
+  case ScriptOp::Frames: return frameNumber_ - framesAtStart_ >= std::uint64_t(a.index);
+  case ScriptOp::Save:
+    if (controller_.saveJob().state() == SaveJob::State::Failed)
+      throw std::runtime_error(controller_.saveJob().message());
+    return controller_.saveJob().state() == SaveJob::State::Saved;
+  case ScriptOp::Screenshot: return screenshotTaken_;
+  default: return true;
+  }
+}
+
+} // namespace
+
+bool openWindowSystem(std::string& why) {
+  glfwSetErrorCallback(rememberGlfwError); // reported once, by the caller
+  if (glfwInit()) return true;
+  why = lastGlfwError.empty() ? "GLFW could not start" : lastGlfwError;
+  return false;
+}
+
+void closeWindowSystem() { glfwTerminate(); }
+
+std::optional<int> runViewApp(Scene scene, const ViewAppOptions& options, std::string& why) {
+  GLFWwindow* window = createWindow(scene, options.view.settings);
+  if (!window) {
+    why = "cannot create an OpenGL 3.3 window: " + lastGlfwError;
+    return std::nullopt;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(0); // the loop paces itself (see kFrameSeconds)
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr; // no imgui.ini beside the user's files
+  styleImGui();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330");
+
+  int code = 0;
+  try {
+    ViewApp app(window, std::move(scene), options); // joins its render threads on exit
+    code = app.run();
+  } catch (const std::exception& error) { // the display shader, a screenshot's file
+    std::cerr << "prism: error: " << error.what() << "\n";
+    code = 1;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  return code;
+}
+
+} // namespace prism

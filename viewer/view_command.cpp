@@ -1,0 +1,112 @@
+#include "view_command.h"
+
+#include "core/parallel.h"
+#include "core/scene_parser.h"
+
+#ifdef PRISM_HAVE_PREVIEWER
+#include "view_app.h"
+#endif
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+namespace prism {
+
+namespace {
+
+// Says in one line why there is no window, then renders what the window would
+// have shown: same scene and settings, written to -o or SCENE-STEM.tiff here.
+int renderHeadless(const ViewCommandOptions& o, const std::string& why) {
+  RenderCommandOptions render = o.render;
+  if (render.output.empty())
+    render.output = std::filesystem::path(render.scene).stem().string() + ".tiff";
+  std::cerr << "prism: " << why << "; rendering headless to " << render.output << " instead\n";
+  return runRenderCommand(render);
+}
+
+} // namespace
+
+CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
+  CLI::App* view = app.add_subcommand(
+      "view", "Open the interactive previewer (the default: `prism SCENE`); without a display, "
+              "render headless");
+  RenderCommandOptions& r = o.render;
+  view->add_option("scene", r.scene, "Scene file (.sc)")->required()->check(CLI::ExistingFile);
+  view->add_option("-o,--output", r.output,
+                   "Where Save writes (and the headless fallback) [SCENE-STEM.tiff]");
+  view->add_option("--depth", r.depth, "Maximum ray depth D >= 1 [5]")->check(CLI::Range(1, 1000));
+  view->add_option("--thresh", r.thresh, "Antialiasing threshold in [0, 1]")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  view->add_option("--size", r.size, "Image size W H (overrides the scene's resolution)")
+      ->expected(2)
+      ->check(CLI::Range(1, 32768));
+  view->add_option("--threads", r.threads, "Render threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
+  view->add_flag("--jitter", r.jitter, "Jitter the 16 sub-samples within their cells");
+  const std::map<std::string, AccelKind> accels{
+      {"bvh", AccelKind::Bvh}, {"groups", AccelKind::Groups}, {"none", AccelKind::None}};
+  view->add_option("--accel", r.accel, "Ray acceleration: bvh, groups or none")
+      ->transform(CLI::CheckedTransformer(accels, CLI::ignore_case));
+  view->add_flag("-q,--quiet", r.quiet, "Headless fallback: no progress and no statistics");
+  view->add_option("--script", o.script,
+                   "Run a scripted session from FILE (waits, edits, save, screenshot, quit)")
+      ->check(CLI::ExistingFile);
+  return view;
+}
+
+std::vector<const char*> withDefaultCommand(const CLI::App& app, int argc, char** argv) {
+  std::vector<const char*> args(argv, argv + argc);
+  if (argc < 2 || argv[1][0] == '-') return args;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->get_name() == argv[1]) return args;
+  std::error_code error;
+  if (std::filesystem::is_regular_file(argv[1], error)) args.insert(args.begin() + 1, "view");
+  return args;
+}
+
+int runViewCommand(const ViewCommandOptions& o) {
+#ifndef PRISM_HAVE_PREVIEWER
+  return renderHeadless(o, "this prism was built without the previewer");
+#else
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!display || !*display) && (!wayland || !*wayland))
+    return renderHeadless(o, "no display (DISPLAY is not set)");
+  std::string why;
+  if (!openWindowSystem(why)) return renderHeadless(o, "cannot open a window (" + why + ")");
+
+  ViewAppOptions app;
+  int code = kExitOk;
+  try {
+    if (!o.script.empty()) app.script = loadScript(o.script);
+    Scene scene = loadScene(o.render.scene);
+    ViewOptions& v = app.view;
+    v.scenePath = o.render.scene;
+    v.sizeFromScene = o.render.size.empty();
+    v.settings.width = v.sizeFromScene ? scene.width : o.render.size[0];
+    v.settings.height = v.sizeFromScene ? scene.height : o.render.size[1];
+    v.settings.maxDepth = o.render.depth.value_or(5);
+    v.settings.thresh = o.render.thresh;
+    v.settings.jitter = o.render.jitter;
+    v.settings.threads = resolveThreadCount(o.render.threads);
+    v.accel = o.render.accel;
+    v.savePath = o.render.output.empty()
+                     ? std::filesystem::path(o.render.scene).stem().string() + ".tiff"
+                     : o.render.output;
+    const std::optional<int> ran = runViewApp(std::move(scene), app, why);
+    closeWindowSystem();
+    return ran ? *ran : renderHeadless(o, why);
+  } catch (const SceneError& error) { // the scene or the script
+    for (const Diagnostic& d : error.diagnostics()) std::cerr << d.format() << "\n";
+    code = kExitUsage;
+  }
+  closeWindowSystem();
+  return code;
+#endif
+}
+
+} // namespace prism

@@ -1,0 +1,266 @@
+#include "view_script.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace prism {
+
+namespace {
+
+struct Token {
+  std::string text;
+  int column = 1; // 1-based
+};
+
+std::vector<Token> split(const std::string& line) {
+  std::vector<Token> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace((unsigned char)line[i])) ++i;
+    if (i >= line.size()) break;
+    const std::size_t start = i;
+    while (i < line.size() && !std::isspace((unsigned char)line[i])) ++i;
+    tokens.push_back({line.substr(start, i - start), int(start) + 1});
+  }
+  return tokens;
+}
+
+// The text after the keyword, trimmed: paths and echo text may hold spaces.
+std::string restOfLine(const std::string& line, const Token& keyword) {
+  std::size_t start = std::size_t(keyword.column - 1) + keyword.text.size();
+  while (start < line.size() && std::isspace((unsigned char)line[start])) ++start;
+  std::size_t end = line.size();
+  while (end > start && std::isspace((unsigned char)line[end - 1])) --end;
+  return line.substr(start, end - start);
+}
+
+bool toNumber(const std::string& text, double& value) {
+  errno = 0;
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0' && errno == 0 && std::isfinite(value);
+}
+
+// One line's parse: fills `action` or records why not.
+class LineParser {
+public:
+  LineParser(const std::string& name, int line, std::vector<Diagnostic>& errors)
+      : name_(name), line_(line), errors_(errors) {}
+
+  void error(const Token& at, const std::string& message) {
+    errors_.push_back({name_, line_, at.column, message});
+    ok_ = false;
+  }
+  bool ok() const { return ok_; }
+
+  // Expects exactly `count` arguments after the keyword.
+  bool arity(const std::vector<Token>& t, std::size_t count, const std::string& usage) {
+    if (t.size() == count + 1) return true;
+    error(t.size() > count + 1 ? t[count + 1] : t[0],
+          t[0].text + ": expected " + usage + ", got " + std::to_string(t.size() - 1) +
+              " argument" + (t.size() == 2 ? "" : "s"));
+    return false;
+  }
+
+  double number(const Token& t, const std::string& what, double min, double max) {
+    double value = 0.0;
+    if (!toNumber(t.text, value)) {
+      error(t, what + ": expected a number, got '" + t.text + "'");
+    } else if (value < min || value > max) {
+      std::ostringstream range;
+      range << what << " must be in [" << min << ", " << max << "], got " << t.text;
+      error(t, range.str());
+    }
+    return value;
+  }
+
+  int integer(const Token& t, const std::string& what, int min, int max) {
+    const double value = number(t, what, min, max);
+    if (ok_ && value != std::floor(value)) error(t, what + ": expected an integer, got " + t.text);
+    return ok_ ? int(value) : 0;
+  }
+
+  double onOff(const Token& t) {
+    if (t.text == "on") return 1.0;
+    if (t.text == "off") return 0.0;
+    error(t, "expected on or off, got '" + t.text + "'");
+    return 0.0;
+  }
+
+private:
+  const std::string& name_;
+  int line_;
+  std::vector<Diagnostic>& errors_;
+  bool ok_ = true;
+};
+
+const std::map<std::string, ScriptOp>& keywords() {
+  static const std::map<std::string, ScriptOp> table{
+      {"wait", ScriptOp::Wait},       {"frames", ScriptOp::Frames},
+      {"timeout", ScriptOp::Timeout}, {"depth", ScriptOp::Depth},
+      {"thresh", ScriptOp::Thresh},   {"jitter", ScriptOp::Jitter},
+      {"ambient", ScriptOp::Ambient}, {"light", ScriptOp::Light},
+      {"intensity", ScriptOp::Intensity}, {"orbit", ScriptOp::Orbit},
+      {"pan", ScriptOp::Pan},         {"zoom", ScriptOp::Zoom},
+      {"reset", ScriptOp::Reset},     {"overlay", ScriptOp::Overlay},
+      {"markers", ScriptOp::Markers}, {"reload", ScriptOp::Reload},
+      {"save", ScriptOp::Save},       {"screenshot", ScriptOp::Screenshot},
+      {"echo", ScriptOp::Echo},       {"quit", ScriptOp::Quit},
+  };
+  return table;
+}
+
+const std::map<std::string, WaitFor>& waitTargets() {
+  static const std::map<std::string, WaitFor> table{{"coarse", WaitFor::Coarse},
+                                                    {"pass1", WaitFor::Pass1},
+                                                    {"done", WaitFor::Done},
+                                                    {"reload", WaitFor::Reload},
+                                                    {"error", WaitFor::Error}};
+  return table;
+}
+
+void parseArguments(const std::string& line, const std::vector<Token>& t, LineParser& p,
+                    ScriptAction& a) {
+  constexpr double kHuge = 1e30;
+  auto numbers = [&](std::size_t first, const char* what, double min) {
+    for (std::size_t i = first; i < t.size(); ++i) a.values.push_back(p.number(t[i], what, min, kHuge));
+  };
+  switch (a.op) {
+  case ScriptOp::Wait:
+    if (!p.arity(t, 1, "coarse, pass1, done, reload or error")) return;
+    if (const auto it = waitTargets().find(t[1].text); it != waitTargets().end()) {
+      a.waitFor = it->second;
+    } else {
+      p.error(t[1], "wait: expected coarse, pass1, done, reload or error, got '" + t[1].text + "'");
+    }
+    return;
+  case ScriptOp::Frames:
+    if (p.arity(t, 1, "N")) a.index = p.integer(t[1], "frames", 0, 1000000);
+    return;
+  case ScriptOp::Timeout:
+    if (p.arity(t, 1, "SECONDS")) a.values.push_back(p.number(t[1], "timeout", 0.001, 1e6));
+    return;
+  case ScriptOp::Depth:
+    if (p.arity(t, 1, "D")) a.index = p.integer(t[1], "depth", 1, 1000);
+    return;
+  case ScriptOp::Thresh:
+    if (p.arity(t, 1, "T")) a.values.push_back(p.number(t[1], "thresh", 0.0, 1.0));
+    return;
+  case ScriptOp::Jitter:
+  case ScriptOp::Overlay:
+  case ScriptOp::Markers:
+    if (p.arity(t, 1, "on or off")) a.values.push_back(p.onOff(t[1]));
+    return;
+  case ScriptOp::Ambient:
+    if (p.arity(t, 3, "R G B")) numbers(1, "ambient", 0.0);
+    return;
+  case ScriptOp::Light:
+    if (!p.arity(t, 4, "N X Y Z")) return;
+    a.index = p.integer(t[1], "light number", 1, 1000000);
+    numbers(2, "light position", -kHuge);
+    return;
+  case ScriptOp::Intensity:
+    if (!p.arity(t, 4, "N R G B")) return;
+    a.index = p.integer(t[1], "light number", 1, 1000000);
+    numbers(2, "intensity", 0.0);
+    return;
+  case ScriptOp::Orbit:
+    if (p.arity(t, 2, "YAW PITCH (degrees)")) numbers(1, "orbit", -kHuge);
+    return;
+  case ScriptOp::Pan:
+    if (p.arity(t, 2, "DX DY (pixels)")) numbers(1, "pan", -kHuge);
+    return;
+  case ScriptOp::Zoom:
+    if (p.arity(t, 1, "FACTOR")) a.values.push_back(p.number(t[1], "zoom", 1e-6, 1e6));
+    return;
+  case ScriptOp::Save:
+  case ScriptOp::Screenshot:
+    if (t.size() < 2) p.error(t[0], t[0].text + ": expected PATH");
+    a.path = restOfLine(line, t[0]);
+    return;
+  case ScriptOp::Echo:
+    a.path = restOfLine(line, t[0]);
+    return;
+  case ScriptOp::Reset:
+  case ScriptOp::Reload:
+  case ScriptOp::Quit:
+    p.arity(t, 0, "no arguments");
+    return;
+  }
+}
+
+} // namespace
+
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name) {
+  std::vector<ScriptAction> actions;
+  std::vector<Diagnostic> errors;
+  std::istringstream in(text);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (const std::size_t hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    const std::vector<Token> tokens = split(line);
+    if (tokens.empty()) continue;
+    LineParser p(name, number, errors);
+    const auto it = keywords().find(tokens[0].text);
+    if (it == keywords().end()) {
+      p.error(tokens[0], "unknown action '" + tokens[0].text + "'");
+      continue;
+    }
+    ScriptAction action;
+    action.op = it->second;
+    action.line = number;
+    action.text = restOfLine(line, Token{"", 1});
+    parseArguments(line, tokens, p, action);
+    if (p.ok()) actions.push_back(std::move(action));
+  }
+  if (!errors.empty()) throw SceneError(std::move(errors));
+  return actions;
+}
+
+std::vector<ScriptAction> loadScript(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError({Diagnostic{path, 1, 1, "cannot read the script"}});
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseScript(text.str(), path);
+}
+
+bool ScriptRunner::step(ScriptHost& host, Clock::time_point now) {
+  while (next_ < actions_.size()) {
+    const ScriptAction& action = actions_[next_];
+    auto fail = [&](const std::string& why) {
+      throw std::runtime_error("script line " + std::to_string(action.line) + " (" + action.text +
+                               "): " + why);
+    };
+    try {
+      if (!started_) {
+        if (action.op == ScriptOp::Timeout) timeoutSeconds_ = action.values[0];
+        host.start(action);
+        started_ = true;
+        startedAt_ = now;
+      }
+      if (!host.finished(action)) {
+        if (std::chrono::duration<double>(now - startedAt_).count() > timeoutSeconds_) {
+          std::ostringstream why;
+          why << "did not complete within " << timeoutSeconds_ << " s";
+          fail(why.str());
+        }
+        return true; // try again next frame
+      }
+    } catch (const std::runtime_error& error) {
+      if (std::string(error.what()).rfind("script line ", 0) == 0) throw;
+      fail(error.what());
+    }
+    started_ = false;
+    ++next_;
+    if (action.op == ScriptOp::Quit) next_ = actions_.size(); // nothing runs after quit
+  }
+  return false;
+}
+
+} // namespace prism

@@ -72,7 +72,7 @@ bool isNewAtLevel(int x, int y, int level);
 class RenderSession {
 public:
   // Starts rendering at once.
-  RenderSession(Scene scene, const RenderSettings& settings, AccelKind accel = AccelKind::Groups);
+  RenderSession(Scene scene, const RenderSettings& settings, AccelKind accel = AccelKind::Bvh);
   ~RenderSession(); // cancels and joins the workers
 
   RenderSession(const RenderSession&) = delete;

@@ -1,5 +1,6 @@
 #include "bench_command.h"
 
+#include "bench_latency.h"
 #include "bench_measure.h"
 #include "render_command.h"
 
@@ -254,11 +255,21 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommandOptions& o) {
       ->capture_default_str()
       ->check(CLI::Range(std::size_t(1000), std::size_t(100000000)));
   cmd->add_option("--data", o.data, "Write the scaling series to this file (for gnuplot)");
+  cmd->add_flag("--latency", o.latency,
+                "Instead: the previewer's latency after a light move on each scene (640 x 480)");
   return cmd;
 }
 
 int runBenchCommand(const BenchCommandOptions& o) {
   const int allThreads = resolveThreadCount(o.threads);
+  if (o.latency) {
+    LatencyOptions latency;
+    latency.scenes = o.scenes;
+    latency.depth = o.depth;
+    latency.threads = o.threads;
+    benchLatency(latency);
+    return kExitOk;
+  }
   std::cout << "prism bench on " << machineDescription() << ", " << allThreads
             << " threads; renders at " << o.size << " x " << o.size << ", depth " << o.depth
             << ", thresh " << o.thresh << "\n";

@@ -25,6 +25,7 @@ struct BenchCommandOptions {
   bool scaling = true; // run the scaling series
   std::size_t scalingMax = 1000000;
   std::string data; // write the scaling series here (for gnuplot)
+  bool latency = false; // measure the previewer's answer to a light move instead
 };
 
 // Adds the `bench` subcommand and its options to `app`, filling `options`.

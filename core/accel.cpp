@@ -15,6 +15,12 @@ const char* accelKindName(AccelKind kind) {
   return "?";
 }
 
+const std::map<std::string, AccelKind>& accelKindsByName() {
+  static const std::map<std::string, AccelKind> kinds{
+      {"bvh", AccelKind::Bvh}, {"groups", AccelKind::Groups}, {"none", AccelKind::None}};
+  return kinds;
+}
+
 bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, Interval range,
                         double& t) {
   switch (ref.kind) {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -37,6 +38,9 @@ inline void keepNearest(const Hit& candidate, bool& found, Hit& nearest, Interva
 enum class AccelKind { Bvh, Groups, None };
 
 const char* accelKindName(AccelKind kind);
+
+// Every kind by its name ("bvh", "groups", "none"), for command lines.
+const std::map<std::string, AccelKind>& accelKindsByName();
 
 class Accel {
 public:

@@ -228,10 +228,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommandOptions& o) {
       "bench", "Measure acceleration structures and ray throughput (README: Performance)");
   cmd->add_option("scenes", o.scenes, "Scene files to measure (none: only the scaling series)")
       ->check(CLI::ExistingFile);
-  static const std::map<std::string, AccelKind> kinds{
-      {"bvh", AccelKind::Bvh}, {"groups", AccelKind::Groups}, {"none", AccelKind::None}};
   cmd->add_option("--accel", o.accels, "Acceleration modes to measure [bvh groups none]")
-      ->transform(CLI::CheckedTransformer(kinds, CLI::ignore_case))
+      ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case))
       ->delimiter(',');
   cmd->add_option("--size", o.size, "Image size of the renders and eye rays (square)")
       ->capture_default_str()

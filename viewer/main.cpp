@@ -33,12 +33,10 @@ int main(int argc, char** argv) {
   renderCmd->add_flag("--jitter", render.jitter, "Jitter the 16 sub-samples within their cells");
   renderCmd->add_flag("--float", render.floatTiff,
                       "Write float radiance before exposure (implied by .exr and .hdr)");
-  const std::map<std::string, AccelKind> accels{
-      {"bvh", AccelKind::Bvh}, {"groups", AccelKind::Groups}, {"none", AccelKind::None}};
   renderCmd->add_option("--accel", render.accel,
                         "Ray acceleration: bvh (SAH hierarchy, default), groups (the push/pop "
                         "hierarchy) or none (test every primitive)")
-      ->transform(CLI::CheckedTransformer(accels, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case));
   renderCmd->add_option("--stats-json", render.statsJson, "Also write the statistics as JSON to this file");
   renderCmd->add_option("--pixel", render.pixel, "Print the ray tree of pixel X Y instead of rendering")
       ->expected(2)

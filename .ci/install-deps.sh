@@ -9,6 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools  # image files (and oiiotool for comparisons)
   libcli11-dev                      # command-line parsing
   nlohmann-json3-dev                # statistics as JSON
+  libtinyobjloader-dev              # OBJ/MTL import
   libgtest-dev                      # tests
   # the previewer: windows, OpenGL (GLVND) and Mesa's software rasteriser, Dear ImGui
   libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev

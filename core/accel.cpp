@@ -28,6 +28,9 @@ bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, In
   case PrimitiveKind::Ellipsoid: return intersect(scene.ellipsoids[ref.index], ray, range, t);
   case PrimitiveKind::Polygon:
     return intersect(scene.polygons[ref.index], scene.polygonVertices.data(), ray, range, t);
+  case PrimitiveKind::Cone: return intersect(scene.cones[ref.index], ray, range, t);
+  case PrimitiveKind::Triangle:
+    return intersect(scene.triangles[ref.index], scene.meshVertices.data(), ray, range, t);
   }
   return false;
 }
@@ -37,8 +40,17 @@ Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point) {
   case PrimitiveKind::Sphere: return normalAt(scene.spheres[ref.index], point);
   case PrimitiveKind::Ellipsoid: return normalAt(scene.ellipsoids[ref.index], point);
   case PrimitiveKind::Polygon: return scene.polygons[ref.index].normal;
+  case PrimitiveKind::Cone: return normalAt(scene.cones[ref.index], point);
+  case PrimitiveKind::Triangle:
+    return geometricNormal(scene.triangles[ref.index], scene.meshVertices.data());
   }
   return Vec3(0.0, 0.0, 1.0);
+}
+
+Vec3 interpolatedNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point) {
+  if (ref.kind != PrimitiveKind::Triangle) return outwardNormal(scene, ref, point);
+  return interpolatedNormal(scene.triangles[ref.index], scene.meshVertices.data(),
+                            scene.meshNormals.data(), point);
 }
 
 namespace {

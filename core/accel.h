@@ -64,7 +64,12 @@ std::unique_ptr<Accel> makeAccel(const Scene& scene, AccelKind kind);
 bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, Interval range,
                         double& t);
 
-// The unit outward normal of a primitive at a point on it.
+// The unit outward normal of a primitive at a point on it: the geometric one,
+// which decides entering or leaving (SPEC 1.3) and where rays start.
 Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point);
+
+// The normal the surface is shaded with, also outward: for a smooth triangle
+// the interpolated vertex normal, for every other primitive outwardNormal.
+Vec3 interpolatedNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point);
 
 } // namespace prism

@@ -11,7 +11,7 @@ namespace prism {
 
 namespace {
 
-constexpr std::uint32_t kKindShift = 30;
+constexpr std::uint32_t kKindShift = 29; // 3 bits of PrimitiveKind, 29 of index
 constexpr std::uint32_t kIndexMask = (1u << kKindShift) - 1;
 constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
 

@@ -9,7 +9,9 @@
 
 namespace prism {
 
-enum class PrimitiveKind : std::uint8_t { Sphere, Ellipsoid, Polygon };
+// New kinds go at the end: the order is the tie-break between coincident
+// surfaces, and existing scenes must keep their pictures.
+enum class PrimitiveKind : std::uint8_t { Sphere, Ellipsoid, Polygon, Cone, Triangle };
 
 struct PrimitiveRef {
   PrimitiveKind kind = PrimitiveKind::Sphere;

@@ -12,6 +12,8 @@ Aabb Scene::bounds(PrimitiveRef ref) const {
   case PrimitiveKind::Sphere: return boundsOf(spheres[ref.index]);
   case PrimitiveKind::Ellipsoid: return ellipsoids[ref.index].bounds;
   case PrimitiveKind::Polygon: return boundsOf(polygons[ref.index], polygonVertices.data());
+  case PrimitiveKind::Cone: return boundsOf(cones[ref.index]);
+  case PrimitiveKind::Triangle: return boundsOf(triangles[ref.index], meshVertices.data());
   }
   return {};
 }
@@ -21,6 +23,8 @@ std::uint32_t Scene::materialIndex(PrimitiveRef ref) const {
   case PrimitiveKind::Sphere: return spheres[ref.index].material;
   case PrimitiveKind::Ellipsoid: return ellipsoids[ref.index].material;
   case PrimitiveKind::Polygon: return polygons[ref.index].material;
+  case PrimitiveKind::Cone: return cones[ref.index].material;
+  case PrimitiveKind::Triangle: return triangles[ref.index].material;
   }
   return 0;
 }
@@ -30,12 +34,14 @@ Origin Scene::origin(PrimitiveRef ref) const {
   case PrimitiveKind::Sphere: return spheres[ref.index].origin;
   case PrimitiveKind::Ellipsoid: return ellipsoids[ref.index].origin;
   case PrimitiveKind::Polygon: return polygons[ref.index].origin;
+  case PrimitiveKind::Cone: return cones[ref.index].origin;
+  case PrimitiveKind::Triangle: return triangles[ref.index].origin;
   }
   return {};
 }
 
 std::string Scene::describe(PrimitiveRef ref) const {
-  static constexpr const char* kNames[] = {"sphere", "ellipsoid", "polygon"};
+  static constexpr const char* kNames[] = {"sphere", "ellipsoid", "polygon", "cone", "triangle"};
   std::ostringstream text;
   text << kNames[int(ref.kind)] << " #" << ref.index;
   const Origin o = origin(ref);
@@ -51,6 +57,8 @@ std::vector<PrimitiveRef> Scene::allPrimitives() const {
   for (std::uint32_t i = 0; i < ellipsoids.size(); ++i)
     refs.push_back({PrimitiveKind::Ellipsoid, i});
   for (std::uint32_t i = 0; i < polygons.size(); ++i) refs.push_back({PrimitiveKind::Polygon, i});
+  for (std::uint32_t i = 0; i < cones.size(); ++i) refs.push_back({PrimitiveKind::Cone, i});
+  for (std::uint32_t i = 0; i < triangles.size(); ++i) refs.push_back({PrimitiveKind::Triangle, i});
   return refs;
 }
 

@@ -2,8 +2,10 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/cone.h"
 #include "core/material.h"
 #include "core/primitives.h"
+#include "core/triangle.h"
 
 #include <string>
 #include <vector>
@@ -36,11 +38,15 @@ struct Scene {
   std::vector<Ellipsoid> ellipsoids;
   std::vector<Polygon> polygons;
   std::vector<Vec3> polygonVertices;
+  std::vector<Cone> cones;
+  std::vector<Triangle> triangles;
+  std::vector<Vec3> meshVertices; // shared by triangles (Triangle::vertex)
+  std::vector<Vec3> meshNormals;  // unit vertex normals of smooth triangles
   std::vector<Group> groups{Group{}};
   std::vector<std::string> files; // files[0] is the main scene file
 
   std::size_t primitiveCount() const {
-    return spheres.size() + ellipsoids.size() + polygons.size();
+    return spheres.size() + ellipsoids.size() + polygons.size() + cones.size() + triangles.size();
   }
   Aabb bounds(PrimitiveRef ref) const;
   std::uint32_t materialIndex(PrimitiveRef ref) const;

@@ -6,8 +6,11 @@
 // parsing continues so that one run reports every problem (up to a cap).
 #include "core/scene_parser.h"
 
+#include "core/cone.h"
 #include "core/geometry.h"
+#include "core/scene_text.h"
 #include "core/transform.h"
+#include "core/triangle.h"
 
 #include <algorithm>
 #include <array>
@@ -57,251 +60,17 @@ namespace {
 
 constexpr std::size_t kMaxDiagnostics = 50;
 constexpr std::size_t kMaxIncludeDepth = 64; // files open at once, the main file included
-// Bounds the text parsed, counting every inclusion of a file: a few lines that
-// include a file twice, which includes another twice, ... would otherwise expand
-// exponentially. Also the largest single file read.
-constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;
+// kMaxSceneBytes (core/scene_text.h) bounds the text parsed, counting every
+// inclusion of a file: a few lines that include a file twice, which includes
+// another twice, ... would otherwise expand exponentially. Also the largest
+// single file read.
 constexpr const char* kMaxSceneBytesText = "256 MiB";
 constexpr int kMinResolution = 1;
 constexpr int kMaxResolution = 32768;
 constexpr std::uint64_t kMaxPolygonVertices = std::numeric_limits<std::uint32_t>::max();
 
 // ---------------------------------------------------------------------------
-// Numbers
-
-enum class NumberKind { NotANumber, Finite, NonFinite };
-
-// from_chars reports overflow and underflow alike as out of range. Which one it
-// was follows from the order of magnitude: where the first significant digit sits
-// relative to the radix point, plus the exponent. `body` has no sign or "0x".
-bool overflows(std::string_view body, bool hex) {
-  const char exponentChar = hex ? 'p' : 'e';
-  long long order = 0; // the magnitude is about base^(order - 1)
-  bool afterPoint = false, significant = false;
-  std::size_t i = 0;
-  for (; i < body.size(); ++i) {
-    const char c = char(body[i] | 0x20); // lower case for letters
-    if (c == exponentChar) break;
-    if (body[i] == '.') {
-      afterPoint = true;
-    } else if (!significant && body[i] == '0') {
-      if (afterPoint) --order;
-    } else {
-      significant = true;
-      if (!afterPoint) ++order;
-    }
-  }
-  long long exponent = 0;
-  bool negativeExponent = false;
-  if (++i < body.size() && (body[i] == '+' || body[i] == '-')) negativeExponent = body[i++] == '-';
-  for (; i < body.size(); ++i) {
-    exponent = std::min(exponent * 10 + (body[i] - '0'), 1'000'000'000'000LL);
-  }
-  if (negativeExponent) exponent = -exponent;
-  const long long digitScale = hex ? 4 : 1; // hex digits are 4 binary orders, 'p' counts in 2s
-  return (order - 1) * digitScale + exponent > 0;
-}
-
-// Parses a whole token in C floating-point syntax (decimal or hexadecimal, optional
-// sign, "inf" and "nan" recognised so that they can be rejected by name). Independent
-// of the C locale, unlike strtod.
-NumberKind parseNumber(std::string_view text, double& value) {
-  std::string_view body = text;
-  bool negative = false;
-  if (!body.empty() && (body[0] == '+' || body[0] == '-')) {
-    negative = body[0] == '-';
-    body.remove_prefix(1);
-  }
-  auto format = std::chars_format::general;
-  if (body.size() > 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X')) {
-    body.remove_prefix(2);
-    format = std::chars_format::hex;
-  }
-  // from_chars takes its own '-' (which would let "--1" and "0x-1" through) and no '+'.
-  if (body.empty() || body[0] == '+' || body[0] == '-') return NumberKind::NotANumber;
-  const char* end = body.data() + body.size();
-  const auto [ptr, ec] = std::from_chars(body.data(), end, value, format);
-  if (ptr != end || ec == std::errc::invalid_argument) return NumberKind::NotANumber;
-  if (ec == std::errc::result_out_of_range) {
-    if (overflows(body, format == std::chars_format::hex)) return NumberKind::NonFinite;
-    value = 0.0; // too small for a double: rounds to zero, as strtod does
-  }
-  if (negative) value = -value;
-  return std::isfinite(value) ? NumberKind::Finite : NumberKind::NonFinite;
-}
-
-bool isNumber(std::string_view text) {
-  double ignored = 0.0;
-  return parseNumber(text, ignored) != NumberKind::NotANumber;
-}
-
-// An integer literal: digits with an optional '+'. Saturates instead of wrapping
-// (every caller has a much smaller upper bound).
-std::optional<std::uint64_t> parseInteger(std::string_view text) {
-  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
-  if (text.empty()) return std::nullopt;
-  constexpr std::uint64_t kSaturated = std::uint64_t(1) << 62;
-  std::uint64_t value = 0;
-  for (const char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-    value = std::min(value * 10 + std::uint64_t(c - '0'), kSaturated);
-  }
-  return value;
-}
-
-// A token as it may appear inside a message: quoted, control bytes escaped and
-// long tokens shortened (hostile input can hold megabyte-long "tokens").
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  bool shortened = false;
-  if (text.size() > kMaxShown) {
-    std::size_t cut = kMaxShown;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) {
-      --cut; // not inside a UTF-8 sequence
-    }
-    text = text.substr(0, cut);
-    shortened = true;
-  }
-  std::string out = "'";
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7F) {
-      static constexpr char kHex[] = "0123456789abcdef";
-      out += "\\x";
-      out += kHex[byte >> 4];
-      out += kHex[byte & 0xF];
-    } else {
-      out += c;
-    }
-  }
-  return out + (shortened ? "...'" : "'");
-}
-
-// ---------------------------------------------------------------------------
-// Lexer
-
-struct Token {
-  std::string_view text; // empty only at the end of the file
-  int line = 0;
-  int column = 0;
-
-  bool atEnd() const { return text.empty(); }
-};
-
-bool isSpace(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
-}
-
-// Splits one file's text into white-space separated tokens, dropping comments,
-// with one token of lookahead.
-class Lexer {
-public:
-  explicit Lexer(std::string_view text) : text_(text) {
-    // Some editors start UTF-8 files with a byte order mark; columns count after it.
-    if (text_.substr(0, 3) == "\xEF\xBB\xBF") position_.offset = position_.lineStart = 3;
-  }
-
-  const Token& peek() {
-    if (!peeked_) {
-      beforePeek_ = position_;
-      peeked_ = scan(false);
-    }
-    return *peeked_;
-  }
-
-  Token next() {
-    const Token token = peek();
-    peeked_.reset();
-    return token;
-  }
-
-  // The PATH of `include`: the next token, or a double-quoted string on one line
-  // that may contain white space and '#'. An unterminated quote yields a token
-  // that starts with '"' and does not end with one.
-  Token nextPath() {
-    if (peeked_) { // scanned the plain way: scan it again
-      position_ = beforePeek_;
-      peeked_.reset();
-    }
-    return scan(true);
-  }
-
-private:
-  struct Position {
-    std::size_t offset = 0;
-    std::size_t lineStart = 0;
-    int line = 1;
-  };
-
-  void skipSpaceAndComments() {
-    while (position_.offset < text_.size()) {
-      const char c = text_[position_.offset];
-      if (c == '#') {
-        const std::size_t newline = text_.find('\n', position_.offset);
-        position_.offset = newline == std::string_view::npos ? text_.size() : newline;
-      } else if (isSpace(c)) {
-        ++position_.offset;
-        if (c == '\n') {
-          ++position_.line;
-          position_.lineStart = position_.offset;
-        }
-      } else {
-        return;
-      }
-    }
-  }
-
-  Token scan(bool path) {
-    skipSpaceAndComments();
-    Token token;
-    token.line = position_.line;
-    token.column = int(position_.offset - position_.lineStart + 1);
-    const std::size_t start = position_.offset;
-    std::size_t end = start;
-    if (path && start < text_.size() && text_[start] == '"') {
-      const std::size_t close = text_.find_first_of("\"\n", start + 1);
-      end = close == std::string_view::npos ? text_.size()
-                                            : (text_[close] == '"' ? close + 1 : close);
-    } else {
-      while (end < text_.size() && !isSpace(text_[end]) && text_[end] != '#') {
-        ++end;
-      }
-    }
-    token.text = text_.substr(start, end - start);
-    position_.offset = end;
-    return token;
-  }
-
-  std::string_view text_;
-  Position position_;
-  Position beforePeek_;
-  std::optional<Token> peeked_;
-};
-
-// ---------------------------------------------------------------------------
 // Files
-
-// Reads a whole file. Refuses more than kMaxSceneBytes, so that a device such as
-// /dev/zero cannot exhaust memory, and (for includes) anything but a regular file,
-// so that a FIFO cannot block the parse. Returns the reason on failure.
-std::optional<std::string> readFile(const fs::path& path, bool regularOnly, std::string& out) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (regularOnly && !ec && fs::exists(status) && !fs::is_regular_file(status)) {
-    return fs::is_directory(status) ? std::strerror(EISDIR) : "not a regular file";
-  }
-  errno = 0;
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) return std::strerror(errno != 0 ? errno : ENOENT);
-  std::array<char, 1 << 16> buffer;
-  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), file.get())) {
-    if (out.size() + n > kMaxSceneBytes) return std::string("larger than ") + kMaxSceneBytesText;
-    out.append(buffer.data(), n);
-  }
-  if (std::ferror(file.get())) return std::strerror(errno != 0 ? errno : EIO);
-  return std::nullopt;
-}
 
 // The same file reached by different spellings of its path gets one identity, for
 // include-cycle detection, the contents cache and Scene::files.
@@ -399,7 +168,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 17> kKeywords;
+  static const std::array<Keyword, 20> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -466,6 +235,10 @@ private:
   void surface(Command& c);
   void sphere(Command& c);
   void polygon(Command& c);
+  void cone(Command& c);
+  void triangle(Command& c);
+  void ptriangle(Command& c);
+  void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals);
   void push(Command& c);
   void pop(Command& c);
   void translate(Command& c);
@@ -503,7 +276,7 @@ private:
   std::vector<Vec3> vertices_; // scratch for polygon
 };
 
-const std::array<Parser::Keyword, 17> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 20> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -515,6 +288,9 @@ const std::array<Parser::Keyword, 17> Parser::kKeywords = {{
     {"surface", &Parser::surface},
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
+    {"cone", &Parser::cone},
+    {"triangle", &Parser::triangle},
+    {"ptriangle", &Parser::ptriangle},
     {"push", &Parser::push},
     {"pop", &Parser::pop},
     {"translate", &Parser::translate},
@@ -859,6 +635,101 @@ void Parser::polygon(Command& c) {
   scene_.polygonVertices.insert(scene_.polygonVertices.end(), vertices_.begin(), vertices_.end());
   scene_.polygons.push_back(p);
   addPrimitive(PrimitiveKind::Polygon, scene_.polygons.size() - 1);
+}
+
+void Parser::cone(Command& c) {
+  static constexpr const char* kNames[] = {"BX", "BY", "BZ", "BR", "AX", "AY", "AZ", "AR"};
+  Arg a[8];
+  if (!numbers(c, kNames, a)) return;
+  for (const int i : {3, 7}) {
+    if (a[i].value < 0.0) invalid(c, a[i].token, "negative radius " + quoted(a[i].token.text));
+  }
+  if (!c.valid) return;
+  const Vec3 base = vec(a), apex = vec(a + 4);
+  if (const std::optional<std::string> problem = coneProblem(base, a[3].value, apex, a[7].value)) {
+    error(c.keyword, "cone: " + *problem);
+    return;
+  }
+  Cone cone = makeCone(base, a[3].value, apex, a[7].value, transform_.linear(),
+                       transform_.point(Vec3(0.0)));
+  if (!allFinite(cone.worldToObject) || !isFinite(cone.worldToObjectOffset) ||
+      !isFinite(cone.bounds.lo) || !isFinite(cone.bounds.hi)) {
+    error(c.keyword, "cone: too large or too small after the current transform");
+    return;
+  }
+  cone.material = currentMaterial();
+  cone.origin = origin(c);
+  scene_.cones.push_back(cone);
+  addPrimitive(PrimitiveKind::Cone, scene_.cones.size() - 1);
+}
+
+void Parser::triangle(Command& c) {
+  static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "X2", "Y2", "Z2", "X3", "Y3", "Z3"};
+  Arg a[9];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  addTriangle(c, {vec(a), vec(a + 3), vec(a + 6)}, nullptr);
+}
+
+void Parser::ptriangle(Command& c) {
+  static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "NX1", "NY1", "NZ1",
+                                           "X2", "Y2", "Z2", "NX2", "NY2", "NZ2",
+                                           "X3", "Y3", "Z3", "NX3", "NY3", "NZ3"};
+  Arg a[18];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  std::array<Vec3, 3> normals;
+  for (int i = 0; i < 3; ++i) {
+    normals[i] = vec(a + 6 * i + 3);
+    if (normals[i] == Vec3(0.0)) {
+      invalid(c, a[6 * i + 3].token,
+              "N" + std::to_string(i + 1) + " (NX" + std::to_string(i + 1) + " NY" +
+                  std::to_string(i + 1) + " NZ" + std::to_string(i + 1) +
+                  ") must not be the zero vector");
+    }
+  }
+  if (!c.valid) return;
+  addTriangle(c, {vec(a), vec(a + 6), vec(a + 12)}, &normals);
+}
+
+// Places a triangle (and its vertex normals, if any) through the current
+// transform and stores it in the scene's mesh arrays.
+void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals) {
+  std::array<Vec3, 3> n;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = transform_.point(v[i]);
+    if (normals != nullptr) {
+      // Normals move by the inverse transpose; scaled before normalising so
+      // that a tiny or huge one cannot under- or overflow.
+      const Vec3 moved = transform_.normal((*normals)[i] / maxAbsComponent((*normals)[i]));
+      n[i] = glm::normalize(moved / maxAbsComponent(moved));
+      if (!isFinite(n[i])) {
+        error(c.keyword, c.name + ": vertex normal is not finite after the current transform");
+        return;
+      }
+    }
+  }
+  // A mirror turns the counterclockwise order inside out; the normals stay
+  // outward by themselves (the inverse transpose mirrors them too).
+  if (mirrors(transform_)) {
+    std::swap(v[1], v[2]);
+    std::swap(n[1], n[2]);
+  }
+  if (const std::optional<std::string> problem = triangleProblem(v[0], v[1], v[2])) {
+    error(c.keyword, c.name + ": " + *problem);
+    return;
+  }
+  Triangle t;
+  for (int i = 0; i < 3; ++i) {
+    t.vertex[std::size_t(i)] = std::uint32_t(scene_.meshVertices.size());
+    scene_.meshVertices.push_back(v[i]);
+    if (normals != nullptr) {
+      t.normal[std::size_t(i)] = std::uint32_t(scene_.meshNormals.size());
+      scene_.meshNormals.push_back(n[i]);
+    }
+  }
+  t.material = currentMaterial();
+  t.origin = origin(c);
+  scene_.triangles.push_back(t);
+  addPrimitive(PrimitiveKind::Triangle, scene_.triangles.size() - 1);
 }
 
 // ---------------------------------------------------------------------------

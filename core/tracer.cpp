@@ -35,7 +35,9 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
   return true;
 }
 
-bool isFlat(PrimitiveRef ref) { return ref.kind == PrimitiveKind::Polygon; }
+bool isFlat(PrimitiveRef ref) {
+  return ref.kind == PrimitiveKind::Polygon || ref.kind == PrimitiveKind::Triangle;
+}
 
 } // namespace
 
@@ -62,9 +64,31 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   const Vec3 point = ray.at(hit.t);
   const Vec3 normal = outwardNormal(scene_, hit.primitive, point);
   // SPEC 1.3/1.4: leaving iff N.D > 0; shade with the normal facing the ray.
+  // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(normal, ray.dir) > 0.0;
-  const Vec3 n = leaving ? -normal : normal;
-  const SurfaceFrame frame = frameAt(point, n, ray.origin);
+  const Vec3 g = leaving ? -normal : normal;
+  SurfaceFrame frame = frameAt(point, g, ray.origin);
+  // A smooth triangle is shaded with its interpolated normal, turned the same
+  // way; one that faces away from the ray's side of the surface (vertex
+  // normals bent past the face) would light the wrong side: `g` then.
+  Vec3 n = g;
+  if (hit.primitive.kind == PrimitiveKind::Triangle) {
+    const Vec3 interpolated = interpolatedNormal(scene_, hit.primitive, point);
+    const Vec3 turned = leaving ? -interpolated : interpolated;
+    if (glm::dot(turned, g) > 0.0) n = turned;
+    // Shadow and reflected rays start from the curved surface the normals
+    // describe (see liftedPoint), on the outward side only.
+    const Triangle& tri = scene_.triangles[hit.primitive.index];
+    if (!leaving && tri.smooth()) {
+      const Vec3 lifted =
+          liftedPoint(tri, scene_.meshVertices.data(), scene_.meshNormals.data(), point);
+      frame.above = frameAt(lifted, g, ray.origin).above;
+    }
+  }
+  // A grazing ray can meet a bent shading normal from behind; mirroring or
+  // refracting about it would send the ray through the surface, so those use
+  // `g` there. (For every other primitive n is g and this changes nothing.)
+  const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
   const PrimitiveRef* skip = isFlat(hit.primitive) ? &hit.primitive : nullptr;
 
   Color diffuse(0.0), specular(0.0);
@@ -123,14 +147,14 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
       reflectedRecord = &record->children.emplace_back();
       reflectedRecord->kind = RayKind::Reflected;
     }
-    const Ray r{frame.above, reflect(ray.dir, n)};
+    const Ray r{frame.above, reflect(ray.dir, nr)};
     reflected = m.ksr * trace(r, depth + 1, counts, reflectedRecord, skip);
   }
   if (depth < maxDepth_ && m.kst > 0.0) {
     // Entering a solid from air the index ratio is 1/ir; leaving it, ir.
     const double eta = leaving ? m.ir : 1.0 / m.ir;
     Vec3 dir;
-    if (refract(ray.dir, n, eta, dir)) {
+    if (refract(ray.dir, nr, eta, dir)) {
       ++counts.transmitted;
       if (record != nullptr) {
         transmittedRecord = &record->children.emplace_back();

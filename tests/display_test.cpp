@@ -23,15 +23,26 @@ constexpr int kFrameHeight = 120;
 class DisplayTest : public ::testing::Test {
 protected:
   void SetUp() override {
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-                              OSMESA_STENCIL_BITS, 0, OSMESA_ACCUM_BITS, 0,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              0,
+                              OSMESA_STENCIL_BITS,
+                              0,
+                              OSMESA_ACCUM_BITS,
+                              0,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              3,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              3,
+                              0};
     context_ = OSMesaCreateContextAttribs(attributes, nullptr);
     ASSERT_NE(context_, nullptr) << "OSMesa could not create a 3.3 core context";
     frame_.assign(std::size_t(kFrameWidth) * kFrameHeight * 4, 0);
-    ASSERT_TRUE(OSMesaMakeCurrent(context_, frame_.data(), GL_UNSIGNED_BYTE, kFrameWidth,
-                                  kFrameHeight));
+    ASSERT_TRUE(
+        OSMesaMakeCurrent(context_, frame_.data(), GL_UNSIGNED_BYTE, kFrameWidth, kFrameHeight));
     display_ = std::make_unique<ImageDisplay>();
   }
   void TearDown() override {
@@ -72,12 +83,13 @@ std::vector<Rgb> probeValues(float scale, std::size_t count) {
       v.push_back(std::nextafter(r, inf));
     }
   }
-  for (float r : {0.0f, -0.0f, -1.0f, 1e-30f, 1e30f, inf, 255.0f / scale, 254.5f / scale,
-                  300.0f / scale})
+  for (float r :
+       {0.0f, -0.0f, -1.0f, 1e-30f, 1e30f, inf, 255.0f / scale, 254.5f / scale, 300.0f / scale})
     v.push_back(r);
   std::mt19937 random(12345);
   std::uniform_real_distribution<float> uniform(0.0f, 3.0f / scale * 128.0f);
-  while (v.size() < count * 3) v.push_back(uniform(random));
+  while (v.size() < count * 3)
+    v.push_back(uniform(random));
   std::vector<Rgb> pixels(count);
   for (std::size_t i = 0; i < count; ++i) {
     // Shuffle channels so each branch is exercised in r, g and b.
@@ -107,7 +119,8 @@ void expectExposed(const std::vector<std::uint8_t>& frame, int width, int height
       }
       for (int ch = 0; ch < 3; ++ch) {
         if (got[ch] != want[ch] && ++mismatches <= 10) {
-          const Rgb& c = radiance[std::size_t(std::max(iy, 0)) * std::size_t(width) + std::size_t(std::max(ix, 0))];
+          const Rgb& c = radiance[std::size_t(std::max(iy, 0)) * std::size_t(width) +
+                                  std::size_t(std::max(ix, 0))];
           ADD_FAILURE() << "frame pixel (" << fx << ", " << fy << ") channel " << ch << ": shader "
                         << int(got[ch]) << ", exposeChannel " << int(want[ch]) << " (radiance "
                         << c[ch] << ", scale " << scale << ")";
@@ -152,7 +165,8 @@ TEST_F(DisplayTest, ZeroAvgmaxIsBlack) {
   ASSERT_EQ(scale, 0.0f);
   auto radiance = probeValues(1.0f, std::size_t(w) * h);
   for (Rgb& c : radiance) // inf * 0 is NaN; a film never holds inf
-    for (int i = 0; i < 3; ++i) c[i] = std::min(c[i], 1e30f);
+    for (int i = 0; i < 3; ++i)
+      c[i] = std::min(c[i], 1e30f);
   const std::vector<std::uint8_t> mask(radiance.size(), 0);
   DisplayView view;
   view.scale = scale;
@@ -164,7 +178,8 @@ TEST_F(DisplayTest, OverlayTintsOnlySupersampledPixels) {
   const int w = 16, h = 8;
   std::vector<Rgb> radiance(std::size_t(w) * h, Rgb(0.5f, 0.25f, 0.125f));
   std::vector<std::uint8_t> mask(radiance.size(), 0);
-  for (std::size_t i = 0; i < mask.size(); i += 3) mask[i] = 1;
+  for (std::size_t i = 0; i < mask.size(); i += 3)
+    mask[i] = 1;
   DisplayView view;
   view.scale = 128.0f;
   view.overlay = true;
@@ -185,7 +200,8 @@ TEST_F(DisplayTest, ScaledToFitSamplesNearestPixels) {
   std::vector<Rgb> radiance(std::size_t(w) * h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      radiance[std::size_t(y) * w + std::size_t(x)] = Rgb(float(x) / 128.0f, float(y) / 128.0f, 0.0f);
+      radiance[std::size_t(y) * w + std::size_t(x)] =
+          Rgb(float(x) / 128.0f, float(y) / 128.0f, 0.0f);
   const std::vector<std::uint8_t> mask(radiance.size(), 0);
   DisplayView view;
   view.scale = 128.0f;

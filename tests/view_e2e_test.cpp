@@ -10,14 +10,39 @@ namespace prism::test {
 namespace {
 
 const std::string kPrism = std::string("'") + PRISM_BINARY + "'";
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
+
+// xvfb-run with a display number of its own. `-a` alone starts looking at :99,
+// so two test runs on one machine (say, a Release and a sanitizer build) can
+// race for the same number and one Xvfb fails to start: start elsewhere for
+// each process and attempt, and try again when that happens. -noreset: when
+// the last client leaves, Xvfb would reset and signal xvfb-run (SIGUSR1),
+// which can hit xvfb-run's own clean-up and make it fail with exit status 5.
+std::string xvfb(int attempt) {
+  const int first = 100 + int((unsigned(getpid()) * 7u + unsigned(attempt) * 131u) % 800u);
+  return "xvfb-run -a -n " + std::to_string(first) + " -s '-screen 0 1280x800x24 -noreset' ";
+}
+
+bool xvfbFailed(const std::string& err) {
+  return err.find("Xvfb failed to start") != std::string::npos;
+}
+
+RunResult runInXvfb(const fs::path& dir, const std::string& command) {
+  RunResult r;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    r = run(dir, xvfb(attempt) + command);
+    if (!xvfbFailed(r.err)) break;
+  }
+  return r;
+}
 
 // Two spheres (one a mirror) on a checker-free floor, two lights at top level
 // (no transform, so `light 1 X Y Z` in a script equals the same line in a file).
 std::string scene(const std::string& light1) {
   return "eye 0 1.5 6\nlookat 0 0.3 0\nfov 40\nresolution 160 120\n"
          "ambient 0.05 0.05 0.05\n"
-         "light " + light1 + "  40 38 34\n"
+         "light " +
+         light1 +
+         "  40 38 34\n"
          "light -4 5 3  20 22 26\n"
          "surface 0.9 0.3 0.2  0.8 0.3 0  40 1\nsphere -0.8 0.3 0 0.8\n"
          "surface 0.9 0.9 0.9  0.1 0.8 0  200 1\nsphere 1 0.2 -0.5 0.7\n"
@@ -46,7 +71,8 @@ TEST(ViewE2E, ScriptedSessionShowsTheImageAndSavesWhatRenderWrites) {
   ScratchDir dir;
   writeFile(dir / "a.sc", scene("3 4 4"));
   writeFile(dir / "b.sc", scene("-1 3 5")); // a.sc after the script's light edit
-  writeFile(dir / "s.txt", R"(# A session a user could have: look, change settings, move a light, save.
+  writeFile(dir / "s.txt",
+            R"(# A session a user could have: look, change settings, move a light, save.
 wait coarse
 wait pass1
 depth 3
@@ -61,7 +87,7 @@ markers on
 screenshot overlay.png
 quit
 )");
-  const RunResult r = run(dir.path(), kXvfb + kPrism + " view a.sc --script s.txt");
+  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
 
   const RunResult ref =
@@ -139,7 +165,8 @@ TEST(ViewE2E, ReloadsWhenAFileChangesAndKeepsTheLastGoodSceneOnErrors) {
   const std::string full = scene("3 4 4");
   const std::size_t lights = full.find("light ");
   const std::size_t afterLights = full.find("surface");
-  writeFile(dir / "main.sc", full.substr(0, lights) + "include lights.sc\n" + full.substr(afterLights));
+  writeFile(dir / "main.sc",
+            full.substr(0, lights) + "include lights.sc\n" + full.substr(afterLights));
   writeFile(dir / "lights.sc", full.substr(lights, afterLights - lights));
   writeFile(dir / "good.sc", full);
   writeFile(dir / "s.txt", R"(wait done
@@ -153,15 +180,21 @@ wait done
 save fixed.tiff
 quit
 )");
-  Session session("cd " + quoted(dir.path()) + " && " + kXvfb + kPrism +
-                  " view main.sc --depth 2 --script s.txt 2>stderr.txt");
   std::string output;
-  while (const auto line = session.line()) {
-    output += *line + "\n";
-    if (*line == "ready") writeFile(dir / "lights.sc", "light 1 2 oops\n");
-    if (*line == "broken") writeFile(dir / "lights.sc", "light -2 4 5  50 50 50\n");
+  int status = -1;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    Session session("cd " + quoted(dir.path()) + " && " + xvfb(attempt) + kPrism +
+                    " view main.sc --depth 2 --script s.txt 2>stderr.txt");
+    output.clear();
+    while (const auto line = session.line()) {
+      output += *line + "\n";
+      if (*line == "ready") writeFile(dir / "lights.sc", "light 1 2 oops\n");
+      if (*line == "broken") writeFile(dir / "lights.sc", "light -2 4 5  50 50 50\n");
+    }
+    status = session.close();
+    if (!xvfbFailed(slurp(dir / "stderr.txt"))) break;
   }
-  ASSERT_EQ(session.close(), 0) << output << slurp(dir / "stderr.txt");
+  ASSERT_EQ(status, 0) << output << slurp(dir / "stderr.txt");
 
   // The error was reported with its location ...
   const std::string err = slurp(dir / "stderr.txt");
@@ -174,8 +207,8 @@ quit
   EXPECT_TRUE(findExact(*broken, *good)) << "the last good scene is not on screen";
 
   // The fixed scene was picked up by itself, and Save wrote its picture.
-  writeFile(dir / "fixed.sc", full.substr(0, lights) + "light -2 4 5  50 50 50\n" +
-                                  full.substr(afterLights));
+  writeFile(dir / "fixed.sc",
+            full.substr(0, lights) + "light -2 4 5  50 50 50\n" + full.substr(afterLights));
   ASSERT_EQ(run(dir.path(), kPrism + " render fixed.sc -o ref.tiff --depth 2 -q").exitCode, 0);
   const auto reference = readPicture(dir / "ref.tiff");
   const auto fixed = readPicture(dir / "fixed.tiff");
@@ -187,15 +220,16 @@ TEST(ViewE2E, ScriptErrorsAreReportedWithTheirLine) {
   ScratchDir dir;
   writeFile(dir / "a.sc", scene("3 4 4"));
   writeFile(dir / "bad.txt", "wait pass1\nfly away\n");
-  const RunResult parse = run(dir.path(), kXvfb + kPrism + " view a.sc --script bad.txt");
+  const RunResult parse = runInXvfb(dir.path(), kPrism + " view a.sc --script bad.txt");
   EXPECT_EQ(parse.exitCode, 2);
   EXPECT_NE(parse.err.find("bad.txt:2:1: error: unknown action 'fly'"), std::string::npos)
       << parse.err;
   writeFile(dir / "light.txt", "wait coarse\nlight 9 0 0 0\nquit\n");
-  const RunResult runtime = run(dir.path(), kXvfb + kPrism + " view a.sc --script light.txt");
+  const RunResult runtime = runInXvfb(dir.path(), kPrism + " view a.sc --script light.txt");
   EXPECT_EQ(runtime.exitCode, 1);
-  EXPECT_NE(runtime.err.find("script line 2 (light 9 0 0 0): there is no light 9 (the scene has 2)"),
-            std::string::npos)
+  EXPECT_NE(
+      runtime.err.find("script line 2 (light 9 0 0 0): there is no light 9 (the scene has 2)"),
+      std::string::npos)
       << runtime.err;
 }
 

@@ -103,13 +103,11 @@ TEST(ViewScript, ReportsEveryBadLineWithItsPosition) {
   EXPECT_EQ(errors[3].format(), "s.txt:5:7: error: depth: expected an integer, got 2.5");
   EXPECT_EQ(errors[4].format(), "s.txt:6:8: error: thresh must be in [0, 1], got 1.5");
   EXPECT_EQ(errors[5].format(), "s.txt:7:1: error: light: expected N X Y Z, got 3 arguments");
-  EXPECT_EQ(errors[6].format(),
-            "s.txt:8:13: error: light position: expected a number, got 'x'");
+  EXPECT_EQ(errors[6].format(), "s.txt:8:13: error: light position: expected a number, got 'x'");
   EXPECT_EQ(errors[7].line, 9);
   EXPECT_EQ(errors[8].format(), "s.txt:10:8: error: expected on or off, got 'maybe'");
   EXPECT_EQ(errors[9].format(), "s.txt:11:1: error: save: expected PATH");
-  EXPECT_EQ(errors[10].format(),
-            "s.txt:12:6: error: quit: expected no arguments, got 1 argument");
+  EXPECT_EQ(errors[10].format(), "s.txt:12:6: error: quit: expected no arguments, got 1 argument");
   EXPECT_EQ(errors[11].line, 13);
   EXPECT_EQ(errors[12].line, 14);
 }

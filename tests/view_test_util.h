@@ -62,8 +62,8 @@ struct RunResult {
 // Runs a shell command in `dir`, capturing its stdout and stderr.
 inline RunResult run(const fs::path& dir, const std::string& command) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string line = "cd " + quoted(dir) + " && " + command + " >" + quoted(out) + " 2>" +
-                           quoted(err);
+  const std::string line =
+      "cd " + quoted(dir) + " && " + command + " >" + quoted(out) + " 2>" + quoted(err);
   const int status = std::system(line.c_str());
   RunResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -91,7 +91,8 @@ inline std::optional<Picture> readPicture(const fs::path& path) {
   p.height = spec.height;
   p.channels = spec.nchannels;
   p.pixels.resize(std::size_t(p.width) * std::size_t(p.height) * std::size_t(p.channels));
-  if (!in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::UINT8, p.pixels.data())) return std::nullopt;
+  if (!in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::UINT8, p.pixels.data()))
+    return std::nullopt;
   return p;
 }
 

@@ -6,7 +6,7 @@
 
 #include "core/parallel.h"
 #include "core/scene_generators.h"
-#include "core/scene_parser.h"
+#include "core/scene_loader.h"
 #include "core/system_info.h"
 
 #include <CLI/CLI.hpp>
@@ -96,7 +96,7 @@ void benchScenes(const BenchCommandOptions& o, int allThreads) {
     std::cerr << "bench: " << name << "\n";
     Scene scene;
     try {
-      scene = loadScene(path);
+      scene = loadAnyScene(path);
     } catch (const SceneError& error) {
       for (const Diagnostic& d : error.diagnostics())
         std::cerr << d.format() << "\n";

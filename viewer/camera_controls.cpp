@@ -46,9 +46,9 @@ CameraSpec orbit(const CameraSpec& camera, double yawDegrees, double pitchDegree
   // Pitch as a change of the polar angle between the offset and `up`, clamped
   // away from the poles; the rotation axis is horizontal, so yaw stays put.
   const double polar = std::acos(std::clamp(glm::dot(offset / distance, axis), -1.0, 1.0));
-  const double target = std::clamp(polar - glm::radians(pitchDegrees),
-                                   glm::radians(kMinPolarDegrees),
-                                   glm::radians(180.0 - kMinPolarDegrees));
+  const double target =
+      std::clamp(polar - glm::radians(pitchDegrees), glm::radians(kMinPolarDegrees),
+                 glm::radians(180.0 - kMinPolarDegrees));
   Vec3 horizontal = offset - glm::dot(offset, axis) * axis;
   if (glm::length(horizontal) < 1e-12 * distance) {
     horizontal = frameOf(camera).right; // looking straight along up: any side will do
@@ -63,8 +63,8 @@ CameraSpec pan(const CameraSpec& camera, double dx, double dy, int imageHeight) 
   const Frame f = frameOf(camera);
   const double distance = glm::length(camera.lookat - camera.eye);
   // World units per pixel in the plane through lookat.
-  const double unit = 2.0 * distance * std::tan(glm::radians(camera.fov) * 0.5) /
-                      double(std::max(1, imageHeight));
+  const double unit =
+      2.0 * distance * std::tan(glm::radians(camera.fov) * 0.5) / double(std::max(1, imageHeight));
   // Dragging right moves the scene right: the camera moves left.
   const Vec3 move = (-dx * f.right + dy * f.up) * unit;
   CameraSpec out = camera;

@@ -16,7 +16,8 @@ FileWatch::Stamp FileWatch::stampOf(const std::string& file) {
 void FileWatch::watch(const std::vector<std::string>& files) {
   files_ = files;
   stamps_.clear();
-  for (const std::string& file : files_) stamps_.push_back(stampOf(file));
+  for (const std::string& file : files_)
+    stamps_.push_back(stampOf(file));
 }
 
 bool FileWatch::changed() {

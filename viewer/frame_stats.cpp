@@ -52,8 +52,8 @@ std::string FrameStats::summary() const {
   std::snprintf(text, sizeof text,
                 "frames while rendering: %zu in %.2f s = %.1f fps; frame interval ms p50 %.1f "
                 "p95 %.1f max %.1f; frame work ms p50 %.1f p95 %.1f max %.1f; idle frames: %zu",
-                f.frames, f.seconds, f.fps, f.intervalP50, f.intervalP95, f.intervalMax,
-                f.workP50, f.workP95, f.workMax, idleFrames_);
+                f.frames, f.seconds, f.fps, f.intervalP50, f.intervalP95, f.intervalMax, f.workP50,
+                f.workP95, f.workMax, idleFrames_);
   return text;
 }
 

@@ -71,9 +71,9 @@ void drawLightMarkers(const ViewController& c, const ImageLayout& l) {
     p.x = std::clamp(p.x, min.x + kInset, std::max(min.x + kInset, max.x - kInset));
     p.y = std::clamp(p.y, min.y + kInset, std::max(min.y + kInset, max.y - kInset));
     const double peak = std::max(1e-9, maxComponent(light.intensity));
-    const ImU32 fill = ImGui::GetColorU32(ImVec4(float(light.intensity.r / peak),
-                                                 float(light.intensity.g / peak),
-                                                 float(light.intensity.b / peak), 1.0f));
+    const ImU32 fill =
+        ImGui::GetColorU32(ImVec4(float(light.intensity.r / peak), float(light.intensity.g / peak),
+                                  float(light.intensity.b / peak), 1.0f));
     draw->AddCircleFilled(p, 7.0f, IM_COL32(0, 0, 0, 200));
     if (inside) {
       draw->AddCircleFilled(p, 5.0f, fill);
@@ -100,8 +100,8 @@ void drawStatusLine(const ViewController& c, const ImageLayout& l) {
   const SessionProgress& p = c.progress();
   const float barWidth = l.areaWidth * float(p.fraction);
   if (p.phase != SessionPhase::Done)
-    draw->AddRectFilled(ImVec2(0.0f, y + kStatusHeight - 3.0f),
-                        ImVec2(barWidth, y + kStatusHeight), IM_COL32(90, 150, 255, 255));
+    draw->AddRectFilled(ImVec2(0.0f, y + kStatusHeight - 3.0f), ImVec2(barWidth, y + kStatusHeight),
+                        IM_COL32(90, 150, 255, 255));
   char text[256];
   std::snprintf(text, sizeof text, "%s    avgmax %.4g  scale %.4g    %s", phaseText(p).c_str(),
                 p.avgmax, double(c.exposure()),

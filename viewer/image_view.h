@@ -9,7 +9,7 @@ namespace prism {
 
 // Window pixels (origin top-left), for the image at its current size.
 struct ImageLayout {
-  float areaWidth = 0.0f;  // the region left of the panel, above the status line
+  float areaWidth = 0.0f; // the region left of the panel, above the status line
   float areaHeight = 0.0f;
   float left = 0.0f; // the image's top-left corner
   float top = 0.0f;

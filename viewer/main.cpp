@@ -1,5 +1,6 @@
 // prism: the command line. Parses arguments and hands them to a command.
 #include "bench_command.h"
+#include "convert_command.h"
 #include "render_command.h"
 #include "view_command.h"
 
@@ -15,7 +16,9 @@ int main(int argc, char** argv) {
 
   RenderCommandOptions render;
   CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to an image file, headless");
-  renderCmd->add_option("scene", render.scene, "Scene file (.sc)")->required()->check(CLI::ExistingFile);
+  renderCmd->add_option("scene", render.scene, "Scene file (.sc, .nff or .obj)")
+      ->required()
+      ->check(CLI::ExistingFile);
   auto* output = renderCmd->add_option(
       "-o,--output", render.output,
       "Output image: .tif/.tiff (8-bit RGB), .png, .exr (float radiance), ...");
@@ -54,6 +57,9 @@ int main(int argc, char** argv) {
   ViewCommandOptions view;
   CLI::App* viewCmd = addViewCommand(app, view);
 
+  ConvertCommandOptions convert;
+  CLI::App* convertCmd = addConvertCommand(app, convert);
+
   try {
     const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
     app.parse(int(args.size()), args.data());
@@ -64,5 +70,6 @@ int main(int argc, char** argv) {
   if (renderCmd->parsed()) return runRenderCommand(render);
   if (viewCmd->parsed()) return runViewCommand(view);
   if (benchCmd->parsed()) return runBenchCommand(bench);
+  if (convertCmd->parsed()) return runConvertCommand(convert);
   return kExitUsage;
 }

@@ -24,14 +24,14 @@ void sceneSection(ViewController& c) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.scenePath().c_str());
   const Scene& s = c.scene();
   ImGui::SameLine();
-  ImGui::TextColored(kDimColour, "%zu primitives, %zu lights", s.primitiveCount(),
-                     s.lights.size());
+  ImGui::TextColored(kDimColour, "%zu primitives, %zu lights", s.primitiveCount(), s.lights.size());
   ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 90.0f);
   if (ImGui::Button("Reload (R)", ImVec2(90.0f, 0.0f))) c.reload();
   if (!c.sceneErrors().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
     ImGui::TextWrapped("The scene has errors; showing the last good one:");
-    for (const std::string& e : c.sceneErrors()) ImGui::TextWrapped("%s", e.c_str());
+    for (const std::string& e : c.sceneErrors())
+      ImGui::TextWrapped("%s", e.c_str());
     ImGui::PopStyleColor();
   }
 }
@@ -89,8 +89,8 @@ void lightsSection(ViewController& c) {
 
 void cameraSection(ViewController& c) {
   const CameraSpec& cam = c.scene().camera;
-  ImGui::TextColored(kDimColour, "eye %.2f %.2f %.2f   lookat %.2f %.2f %.2f", cam.eye.x,
-                     cam.eye.y, cam.eye.z, cam.lookat.x, cam.lookat.y, cam.lookat.z);
+  ImGui::TextColored(kDimColour, "eye %.2f %.2f %.2f   lookat %.2f %.2f %.2f", cam.eye.x, cam.eye.y,
+                     cam.eye.z, cam.lookat.x, cam.lookat.y, cam.lookat.z);
   if (ImGui::Button("Reset (Home)")) c.resetCamera();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene file's camera");
   ImGui::SameLine();

@@ -12,10 +12,10 @@
 namespace prism {
 
 struct PanelState {
-  std::string savePath;  // the Save field
-  bool overlay = false;  // tint supersampled pixels
-  bool markers = true;   // draw the lights over the image
-  bool quit = false;     // Ctrl+Q
+  std::string savePath; // the Save field
+  bool overlay = false; // tint supersampled pixels
+  bool markers = true;  // draw the lights over the image
+  bool quit = false;    // Ctrl+Q
 };
 
 // Width of the panel in pixels at the default font.

@@ -6,7 +6,7 @@
 #include "core/image_formation.h"
 #include "core/image_io.h"
 #include "core/parallel.h"
-#include "core/scene_parser.h"
+#include "core/scene_loader.h"
 #include "core/stats.h"
 #include "core/system_info.h"
 #include "core/tracer.h"
@@ -54,12 +54,14 @@ void writeText(const std::string& path, const std::string& text) {
 int runRenderCommand(const RenderCommandOptions& o) {
   const auto loadStart = Clock::now();
   Scene scene;
+  std::vector<Diagnostic> warnings;
   try {
-    scene = loadScene(o.scene);
+    scene = loadAnyScene(o.scene, &warnings);
   } catch (const SceneError& error) {
     for (const Diagnostic& d : error.diagnostics()) std::cerr << d.format() << "\n";
     return kExitUsage;
   }
+  for (const Diagnostic& d : warnings) std::cerr << formatWarning(d) << "\n";
   const double loadSeconds = secondsSince(loadStart);
 
   RenderSettings settings;

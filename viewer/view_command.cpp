@@ -1,7 +1,7 @@
 #include "view_command.h"
 
 #include "core/parallel.h"
-#include "core/scene_parser.h"
+#include "core/scene_loader.h"
 
 #ifdef PRISM_HAVE_PREVIEWER
 #include "view_app.h"
@@ -10,7 +10,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <map>
 
 namespace prism {
 
@@ -33,7 +32,9 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
       "view", "Open the interactive previewer (the default: `prism SCENE`); without a display, "
               "render headless");
   RenderCommandOptions& r = o.render;
-  view->add_option("scene", r.scene, "Scene file (.sc)")->required()->check(CLI::ExistingFile);
+  view->add_option("scene", r.scene, "Scene file (.sc, .nff or .obj)")
+      ->required()
+      ->check(CLI::ExistingFile);
   view->add_option("-o,--output", r.output,
                    "Where Save writes (and the headless fallback) [SCENE-STEM.tiff]");
   view->add_option("--depth", r.depth, "Maximum ray depth D >= 1 [5]")->check(CLI::Range(1, 1000));
@@ -47,10 +48,8 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));
   view->add_flag("--jitter", r.jitter, "Jitter the 16 sub-samples within their cells");
-  const std::map<std::string, AccelKind> accels{
-      {"bvh", AccelKind::Bvh}, {"groups", AccelKind::Groups}, {"none", AccelKind::None}};
-  view->add_option("--accel", r.accel, "Ray acceleration: bvh, groups or none")
-      ->transform(CLI::CheckedTransformer(accels, CLI::ignore_case));
+  view->add_option("--accel", r.accel, "Ray acceleration: bvh (default), groups or none")
+      ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case));
   view->add_flag("-q,--quiet", r.quiet, "Headless fallback: no progress and no statistics");
   view->add_option("--script", o.script,
                    "Run a scripted session from FILE (waits, edits, save, screenshot, quit)")
@@ -83,7 +82,7 @@ int runViewCommand(const ViewCommandOptions& o) {
   int code = kExitOk;
   try {
     if (!o.script.empty()) app.script = loadScript(o.script);
-    Scene scene = loadScene(o.render.scene);
+    Scene scene = loadAnyScene(o.render.scene);
     ViewOptions& v = app.view;
     v.scenePath = o.render.scene;
     v.sizeFromScene = o.render.size.empty();
@@ -101,7 +100,8 @@ int runViewCommand(const ViewCommandOptions& o) {
     closeWindowSystem();
     return ran ? *ran : renderHeadless(o, why);
   } catch (const SceneError& error) { // the scene or the script
-    for (const Diagnostic& d : error.diagnostics()) std::cerr << d.format() << "\n";
+    for (const Diagnostic& d : error.diagnostics())
+      std::cerr << d.format() << "\n";
     code = kExitUsage;
   }
   closeWindowSystem();

@@ -1,7 +1,7 @@
 #include "view_controller.h"
 
 #include "core/exposure.h"
-#include "core/scene_parser.h"
+#include "core/scene_loader.h"
 
 #include <iostream>
 
@@ -45,7 +45,7 @@ void ViewController::resetCamera() { setCamera(fileCamera_); }
 bool ViewController::reload() {
   Scene scene;
   try {
-    scene = loadScene(options_.scenePath);
+    scene = loadAnyScene(options_.scenePath);
   } catch (const SceneError& error) {
     sceneErrors_.clear();
     for (const Diagnostic& d : error.diagnostics()) {

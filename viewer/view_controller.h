@@ -19,7 +19,7 @@ namespace prism {
 
 struct ViewOptions {
   std::string scenePath;
-  RenderSettings settings; // size, depth, threshold, jitter, threads
+  RenderSettings settings;   // size, depth, threshold, jitter, threads
   bool sizeFromScene = true; // follow the scene's `resolution` on reload (no --size)
   AccelKind accel = AccelKind::Groups;
   std::string savePath; // the Save field's initial text

@@ -21,10 +21,12 @@ std::vector<Token> split(const std::string& line) {
   std::vector<Token> tokens;
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && std::isspace((unsigned char)line[i])) ++i;
+    while (i < line.size() && std::isspace((unsigned char)line[i]))
+      ++i;
     if (i >= line.size()) break;
     const std::size_t start = i;
-    while (i < line.size() && !std::isspace((unsigned char)line[i])) ++i;
+    while (i < line.size() && !std::isspace((unsigned char)line[i]))
+      ++i;
     tokens.push_back({line.substr(start, i - start), int(start) + 1});
   }
   return tokens;
@@ -33,9 +35,11 @@ std::vector<Token> split(const std::string& line) {
 // The text after the keyword, trimmed: paths and echo text may hold spaces.
 std::string restOfLine(const std::string& line, const Token& keyword) {
   std::size_t start = std::size_t(keyword.column - 1) + keyword.text.size();
-  while (start < line.size() && std::isspace((unsigned char)line[start])) ++start;
+  while (start < line.size() && std::isspace((unsigned char)line[start]))
+    ++start;
   std::size_t end = line.size();
-  while (end > start && std::isspace((unsigned char)line[end - 1])) --end;
+  while (end > start && std::isspace((unsigned char)line[end - 1]))
+    --end;
   return line.substr(start, end - start);
 }
 
@@ -61,9 +65,9 @@ public:
   // Expects exactly `count` arguments after the keyword.
   bool arity(const std::vector<Token>& t, std::size_t count, const std::string& usage) {
     if (t.size() == count + 1) return true;
-    error(t.size() > count + 1 ? t[count + 1] : t[0],
-          t[0].text + ": expected " + usage + ", got " + std::to_string(t.size() - 1) +
-              " argument" + (t.size() == 2 ? "" : "s"));
+    error(t.size() > count + 1 ? t[count + 1] : t[0], t[0].text + ": expected " + usage + ", got " +
+                                                          std::to_string(t.size() - 1) +
+                                                          " argument" + (t.size() == 2 ? "" : "s"));
     return false;
   }
 
@@ -101,16 +105,26 @@ private:
 
 const std::map<std::string, ScriptOp>& keywords() {
   static const std::map<std::string, ScriptOp> table{
-      {"wait", ScriptOp::Wait},       {"frames", ScriptOp::Frames},
-      {"timeout", ScriptOp::Timeout}, {"depth", ScriptOp::Depth},
-      {"thresh", ScriptOp::Thresh},   {"jitter", ScriptOp::Jitter},
-      {"ambient", ScriptOp::Ambient}, {"light", ScriptOp::Light},
-      {"intensity", ScriptOp::Intensity}, {"orbit", ScriptOp::Orbit},
-      {"pan", ScriptOp::Pan},         {"zoom", ScriptOp::Zoom},
-      {"reset", ScriptOp::Reset},     {"overlay", ScriptOp::Overlay},
-      {"markers", ScriptOp::Markers}, {"reload", ScriptOp::Reload},
-      {"save", ScriptOp::Save},       {"screenshot", ScriptOp::Screenshot},
-      {"echo", ScriptOp::Echo},       {"quit", ScriptOp::Quit},
+      {"wait", ScriptOp::Wait},
+      {"frames", ScriptOp::Frames},
+      {"timeout", ScriptOp::Timeout},
+      {"depth", ScriptOp::Depth},
+      {"thresh", ScriptOp::Thresh},
+      {"jitter", ScriptOp::Jitter},
+      {"ambient", ScriptOp::Ambient},
+      {"light", ScriptOp::Light},
+      {"intensity", ScriptOp::Intensity},
+      {"orbit", ScriptOp::Orbit},
+      {"pan", ScriptOp::Pan},
+      {"zoom", ScriptOp::Zoom},
+      {"reset", ScriptOp::Reset},
+      {"overlay", ScriptOp::Overlay},
+      {"markers", ScriptOp::Markers},
+      {"reload", ScriptOp::Reload},
+      {"save", ScriptOp::Save},
+      {"screenshot", ScriptOp::Screenshot},
+      {"echo", ScriptOp::Echo},
+      {"quit", ScriptOp::Quit},
   };
   return table;
 }
@@ -128,7 +142,8 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
                     ScriptAction& a) {
   constexpr double kHuge = 1e30;
   auto numbers = [&](std::size_t first, const char* what, double min) {
-    for (std::size_t i = first; i < t.size(); ++i) a.values.push_back(p.number(t[i], what, min, kHuge));
+    for (std::size_t i = first; i < t.size(); ++i)
+      a.values.push_back(p.number(t[i], what, min, kHuge));
   };
   switch (a.op) {
   case ScriptOp::Wait:
@@ -183,14 +198,10 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     if (t.size() < 2) p.error(t[0], t[0].text + ": expected PATH");
     a.path = restOfLine(line, t[0]);
     return;
-  case ScriptOp::Echo:
-    a.path = restOfLine(line, t[0]);
-    return;
+  case ScriptOp::Echo: a.path = restOfLine(line, t[0]); return;
   case ScriptOp::Reset:
   case ScriptOp::Reload:
-  case ScriptOp::Quit:
-    p.arity(t, 0, "no arguments");
-    return;
+  case ScriptOp::Quit: p.arity(t, 0, "no arguments"); return;
   }
 }
 

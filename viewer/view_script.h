@@ -33,8 +33,26 @@
 namespace prism {
 
 enum class ScriptOp {
-  Wait, Frames, Timeout, Depth, Thresh, Jitter, Ambient, Light, Intensity,
-  Orbit, Pan, Zoom, Reset, Overlay, Markers, Reload, Save, Screenshot, Echo, Quit,
+  Wait,
+  Frames,
+  Timeout,
+  Depth,
+  Thresh,
+  Jitter,
+  Ambient,
+  Light,
+  Intensity,
+  Orbit,
+  Pan,
+  Zoom,
+  Reset,
+  Overlay,
+  Markers,
+  Reload,
+  Save,
+  Screenshot,
+  Echo,
+  Quit,
 };
 
 // What `wait` waits for.
@@ -42,12 +60,12 @@ enum class WaitFor { Coarse, Pass1, Done, Reload, Error };
 
 struct ScriptAction {
   ScriptOp op = ScriptOp::Quit;
-  int line = 0;              // 1-based, for messages
-  std::string text;          // the line as written, for messages
+  int line = 0;     // 1-based, for messages
+  std::string text; // the line as written, for messages
   WaitFor waitFor = WaitFor::Done;
-  int index = 0;             // light number (from 1), frame count, depth
+  int index = 0;              // light number (from 1), frame count, depth
   std::vector<double> values; // numbers in order; on/off as 1/0
-  std::string path;          // save, screenshot; echo's text
+  std::string path;           // save, screenshot; echo's text
 };
 
 // Parses a script; throws SceneError (FILE:LINE:COLUMN diagnostics, like a scene)

@@ -1,0 +1,165 @@
+#include "core/scene_text.h"
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace prism {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------
+// Numbers
+
+// from_chars reports overflow and underflow alike as out of range. Which one it
+// was follows from the order of magnitude: where the first significant digit sits
+// relative to the radix point, plus the exponent. `body` has no sign or "0x".
+namespace {
+
+bool overflows(std::string_view body, bool hex) {
+  const char exponentChar = hex ? 'p' : 'e';
+  long long order = 0; // the magnitude is about base^(order - 1)
+  bool afterPoint = false, significant = false;
+  std::size_t i = 0;
+  for (; i < body.size(); ++i) {
+    const char c = char(body[i] | 0x20); // lower case for letters
+    if (c == exponentChar) break;
+    if (body[i] == '.') {
+      afterPoint = true;
+    } else if (!significant && body[i] == '0') {
+      if (afterPoint) --order;
+    } else {
+      significant = true;
+      if (!afterPoint) ++order;
+    }
+  }
+  long long exponent = 0;
+  bool negativeExponent = false;
+  if (++i < body.size() && (body[i] == '+' || body[i] == '-')) negativeExponent = body[i++] == '-';
+  for (; i < body.size(); ++i) {
+    exponent = std::min(exponent * 10 + (body[i] - '0'), 1'000'000'000'000LL);
+  }
+  if (negativeExponent) exponent = -exponent;
+  const long long digitScale = hex ? 4 : 1; // hex digits are 4 binary orders, 'p' counts in 2s
+  return (order - 1) * digitScale + exponent > 0;
+}
+
+} // namespace
+
+// Parses a whole token in C floating-point syntax (decimal or hexadecimal, optional
+// sign, "inf" and "nan" recognised so that they can be rejected by name). Independent
+// of the C locale, unlike strtod.
+NumberKind parseNumber(std::string_view text, double& value) {
+  std::string_view body = text;
+  bool negative = false;
+  if (!body.empty() && (body[0] == '+' || body[0] == '-')) {
+    negative = body[0] == '-';
+    body.remove_prefix(1);
+  }
+  auto format = std::chars_format::general;
+  if (body.size() > 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X')) {
+    body.remove_prefix(2);
+    format = std::chars_format::hex;
+  }
+  // from_chars takes its own '-' (which would let "--1" and "0x-1" through) and no '+'.
+  if (body.empty() || body[0] == '+' || body[0] == '-') return NumberKind::NotANumber;
+  const char* end = body.data() + body.size();
+  const auto [ptr, ec] = std::from_chars(body.data(), end, value, format);
+  if (ptr != end || ec == std::errc::invalid_argument) return NumberKind::NotANumber;
+  if (ec == std::errc::result_out_of_range) {
+    if (overflows(body, format == std::chars_format::hex)) return NumberKind::NonFinite;
+    value = 0.0; // too small for a double: rounds to zero, as strtod does
+  }
+  if (negative) value = -value;
+  return std::isfinite(value) ? NumberKind::Finite : NumberKind::NonFinite;
+}
+
+bool isNumber(std::string_view text) {
+  double ignored = 0.0;
+  return parseNumber(text, ignored) != NumberKind::NotANumber;
+}
+
+// An integer literal: digits with an optional '+'. Saturates instead of wrapping
+// (every caller has a much smaller upper bound).
+std::optional<std::uint64_t> parseInteger(std::string_view text) {
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  if (text.empty()) return std::nullopt;
+  constexpr std::uint64_t kSaturated = std::uint64_t(1) << 62;
+  std::uint64_t value = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    value = std::min(value * 10 + std::uint64_t(c - '0'), kSaturated);
+  }
+  return value;
+}
+
+// A token as it may appear inside a message: quoted, control bytes escaped and
+// long tokens shortened (hostile input can hold megabyte-long "tokens").
+std::string quoted(std::string_view text) {
+  constexpr std::size_t kMaxShown = 40;
+  bool shortened = false;
+  if (text.size() > kMaxShown) {
+    std::size_t cut = kMaxShown;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) {
+      --cut; // not inside a UTF-8 sequence
+    }
+    text = text.substr(0, cut);
+    shortened = true;
+  }
+  std::string out = "'";
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7F) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xF];
+    } else {
+      out += c;
+    }
+  }
+  return out + (shortened ? "...'" : "'");
+}
+
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+// ---------------------------------------------------------------------------
+// Files
+
+std::optional<std::string> readFile(const fs::path& path, bool regularOnly, std::string& out,
+                                    std::size_t maxBytes) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (regularOnly && !ec && fs::exists(status) && !fs::is_regular_file(status)) {
+    return fs::is_directory(status) ? std::strerror(EISDIR) : "not a regular file";
+  }
+  errno = 0;
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) return std::strerror(errno != 0 ? errno : ENOENT);
+  std::array<char, 1 << 16> buffer;
+  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), file.get())) {
+    if (out.size() + n > maxBytes) return "larger than " + std::to_string(maxBytes >> 20) + " MiB";
+    out.append(buffer.data(), n);
+  }
+  if (std::ferror(file.get())) return std::strerror(errno != 0 ? errno : EIO);
+  return std::nullopt;
+}
+
+// The same file reached by different spellings of its path gets one identity, for
+// include-cycle detection, the contents cache and Scene::files.
+fs::path identityOf(const fs::path& path) {
+  std::error_code ec;
+  fs::path canonical = fs::weakly_canonical(path, ec);
+  if (!ec) return canonical;
+  canonical = fs::absolute(path, ec);
+  return ec ? path.lexically_normal() : canonical.lexically_normal();
+}
+
+} // namespace prism

@@ -1,0 +1,195 @@
+#include "core/scene_writer.h"
+
+#include "core/affine_decompose.h"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace prism {
+
+namespace {
+
+// The shortest text that reads back as exactly `x` (std::to_chars).
+std::string num(double x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+std::string vec(const Vec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+
+class Writer {
+public:
+  Writer(std::ostream& out, const Scene& scene) : out_(out), scene_(scene) {}
+
+  void header(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line))
+      out_ << "# " << line << "\n";
+  }
+
+  void globals() {
+    const CameraSpec& c = scene_.camera;
+    out_ << "resolution " << scene_.width << " " << scene_.height << "\n";
+    out_ << "eye " << vec(c.eye) << "\nlookat " << vec(c.lookat) << "\nup " << vec(c.up) << "\n";
+    out_ << "fov " << num(c.fov) << "\n";
+    out_ << "background " << vec(scene_.background) << "\n";
+    out_ << "ambient " << vec(scene_.ambient) << "\n";
+    for (const Light& l : scene_.lights) {
+      out_ << "light " << vec(l.position) << " " << vec(l.intensity) << "\n";
+    }
+  }
+
+  // A group's own primitives, then its sub-groups, each inside push/pop.
+  void group(std::uint32_t index, int depth) {
+    const Group& g = scene_.groups[index];
+    for (const PrimitiveRef& ref : g.primitives)
+      primitive(ref, depth);
+    for (const std::uint32_t child : g.children) {
+      indent(depth);
+      out_ << "push\n";
+      const Material saved = current_;
+      group(child, depth + 1);
+      current_ = saved; // what `pop` restores
+      indent(depth);
+      out_ << "pop\n";
+    }
+  }
+
+private:
+  void indent(int depth) { out_ << std::string(std::size_t(depth) * 2, ' '); }
+
+  void material(const Material& m, int depth) {
+    if (m == current_) return;
+    indent(depth);
+    out_ << "surface " << vec(m.color) << "  " << num(m.kdr) << " " << num(m.ksr) << " "
+         << num(m.kst) << "  " << num(m.e) << " " << num(m.ir) << "\n";
+    current_ = m;
+  }
+
+  // translate, rotate, scale, rotate: the map x -> offset + a x, for an
+  // object written in its own frame.
+  void placed(const Mat3& a, const Vec3& offset, int depth) {
+    const RotationScaleRotation d = decompose(a);
+    indent(depth);
+    out_ << "translate " << vec(offset) << "\n";
+    Vec3 axis;
+    double degrees;
+    axisAngle(d.u, axis, degrees);
+    indent(depth);
+    out_ << "rotate " << vec(axis) << " " << num(degrees) << "\n";
+    indent(depth);
+    out_ << "scale " << vec(d.scale) << "\n";
+    axisAngle(glm::transpose(d.v), axis, degrees);
+    indent(depth);
+    out_ << "rotate " << vec(axis) << " " << num(degrees) << "\n";
+  }
+
+  void primitive(const PrimitiveRef& ref, int depth) {
+    material(scene_.material(ref), depth);
+    switch (ref.kind) {
+    case PrimitiveKind::Sphere: {
+      const Sphere& s = scene_.spheres[ref.index];
+      indent(depth);
+      out_ << "sphere " << vec(s.center) << " " << num(s.radius) << "\n";
+      break;
+    }
+    case PrimitiveKind::Ellipsoid: {
+      // The unit sphere under the inverse of worldToObject.
+      const Ellipsoid& e = scene_.ellipsoids[ref.index];
+      const Mat3 a = glm::inverse(e.worldToObject);
+      indent(depth);
+      out_ << "push\n";
+      placed(a, -(a * e.worldToObjectOffset), depth + 1);
+      indent(depth + 1);
+      out_ << "sphere 0 0 0 1\n";
+      indent(depth);
+      out_ << "pop\n";
+      break;
+    }
+    case PrimitiveKind::Polygon: {
+      const Polygon& p = scene_.polygons[ref.index];
+      indent(depth);
+      out_ << "polygon " << p.vertexCount;
+      for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
+        out_ << "  " << vec(scene_.polygonVertices[p.firstVertex + i]);
+      }
+      out_ << "\n";
+      break;
+    }
+    case PrimitiveKind::Cone: cone(scene_.cones[ref.index], depth); break;
+    case PrimitiveKind::Triangle: {
+      const Triangle& t = scene_.triangles[ref.index];
+      indent(depth);
+      out_ << (t.smooth() ? "ptriangle" : "triangle");
+      for (int i = 0; i < 3; ++i) {
+        out_ << "  " << vec(scene_.meshVertices[t.vertex[std::size_t(i)]]);
+        if (t.smooth()) out_ << "  " << vec(scene_.meshNormals[t.normal[std::size_t(i)]]);
+      }
+      out_ << "\n";
+      break;
+    }
+    }
+  }
+
+  void cone(const Cone& c, int depth) {
+    const Mat3& m = c.objectToWorld;
+    if (isCircular(c)) {
+      const double unit = glm::length(m[0]); // world length of the frame's x
+      indent(depth);
+      out_ << "cone " << vec(c.objectToWorldOffset) << " " << num(c.baseRadius * unit) << "  "
+           << vec(c.objectToWorldOffset + m[2]) << " " << num(c.apexRadius * unit) << "\n";
+      return;
+    }
+    // Elliptic (sheared or unevenly scaled): the cone in its own frame, placed.
+    indent(depth);
+    out_ << "push\n";
+    placed(m, c.objectToWorldOffset, depth + 1);
+    indent(depth + 1);
+    out_ << "cone 0 0 0 " << num(c.baseRadius) << "  0 0 1 " << num(c.apexRadius) << "\n";
+    indent(depth);
+    out_ << "pop\n";
+  }
+
+  std::ostream& out_;
+  const Scene& scene_;
+  Material current_; // the parser's default surface
+};
+
+} // namespace
+
+void writeScene(std::ostream& out, const Scene& scene, const std::string& header) {
+  Writer w(out, scene);
+  w.header(header);
+  w.globals();
+  w.group(0, 0);
+}
+
+void saveScene(const std::filesystem::path& path, const Scene& scene, const std::string& header) {
+  namespace fs = std::filesystem;
+  const fs::path temp = path.string() + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary);
+    if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+    writeScene(out, scene, header);
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temp, ignored);
+      throw std::runtime_error("cannot write '" + path.string() + "'");
+    }
+  }
+  std::error_code error;
+  fs::rename(temp, path, error);
+  if (error) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw std::runtime_error("cannot write '" + path.string() + "': " + error.message());
+  }
+}
+
+} // namespace prism

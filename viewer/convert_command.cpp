@@ -1,0 +1,57 @@
+#include "convert_command.h"
+
+#include "render_command.h"
+
+#include "core/scene_loader.h"
+#include "core/scene_writer.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+namespace prism {
+
+CLI::App* addConvertCommand(CLI::App& app, ConvertCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand("convert", "Write a scene (.sc, .nff or .obj) as a .sc file");
+  cmd->add_option("input", o.input, "Scene to read: .sc, .nff (NFF) or .obj (with its .mtl)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("output", o.output, "The .sc file to write")->required();
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
+  return cmd;
+}
+
+int runConvertCommand(const ConvertCommandOptions& o) {
+  if (sceneFormatOf(o.output) != SceneFormat::Sc) {
+    std::cerr << "prism: error: convert writes .sc scenes; '" << o.output
+              << "' names another format\n";
+    return kExitUsage;
+  }
+  Scene scene;
+  std::vector<Diagnostic> warnings;
+  try {
+    scene = loadAnyScene(o.input, &warnings);
+  } catch (const SceneError& error) {
+    for (const Diagnostic& d : error.diagnostics())
+      std::cerr << d.format() << "\n";
+    return kExitUsage;
+  }
+  for (const Diagnostic& d : warnings)
+    std::cerr << formatWarning(d) << "\n";
+  try {
+    saveScene(o.output, scene, "Converted by prism convert from " + o.input);
+  } catch (const std::exception& error) {
+    std::cerr << "prism: error: " << error.what() << "\n";
+    return kExitFailure;
+  }
+  if (!o.quiet) {
+    std::cerr << "wrote " << o.output << ": " << scene.primitiveCount() << " primitives ("
+              << scene.spheres.size() + scene.ellipsoids.size() << " spheres, "
+              << scene.polygons.size() << " polygons, " << scene.cones.size() << " cones, "
+              << scene.triangles.size() << " triangles), " << scene.lights.size() << " lights, "
+              << scene.materials.size() << " materials\n";
+  }
+  return kExitOk;
+}
+
+} // namespace prism

@@ -1,0 +1,24 @@
+// `prism convert IN OUT.sc`: reads a scene in any format Prism knows (.sc,
+// .nff, .obj) and writes the equivalent .sc scene.
+#pragma once
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace prism {
+
+struct ConvertCommandOptions {
+  std::string input;  // .sc, .nff or .obj
+  std::string output; // the .sc file to write
+  bool quiet = false; // no summary line on stderr
+};
+
+// Adds the `convert` subcommand and its options to `app`, filling `options`.
+CLI::App* addConvertCommand(CLI::App& app, ConvertCommandOptions& options);
+
+int runConvertCommand(const ConvertCommandOptions& options);
+
+} // namespace prism

@@ -47,6 +47,7 @@ struct RenderSession::Work {
   RayCounts counts;
   RayCounts pass1Counts; // the counts when pass 1 completed, kept by a pass-2-only restart
   Clock::time_point start = Clock::now();
+  Clock::time_point end; // when the render finished: elapsed time stops there
   bool done = false;
   std::condition_variable doneChanged;
 };
@@ -250,6 +251,7 @@ void RenderSession::run(Work& work, bool keepPass1) {
   publish([&] {
     work.phase = SessionPhase::Done;
     work.done = true;
+    work.end = Clock::now();
   });
   work.doneChanged.notify_all();
 }
@@ -283,7 +285,7 @@ SessionProgress RenderSession::progress() const {
   p.liveAvgmax = w.pass1Pixels > 0 ? w.sumMax / double(w.pass1Pixels) : 0.0;
   p.avgmax = w.phase == SessionPhase::Coarse ? p.liveAvgmax : w.avgmax;
   p.counts = w.counts;
-  p.elapsedSeconds = std::chrono::duration<double>(Clock::now() - w.start).count();
+  p.elapsedSeconds = std::chrono::duration<double>((w.done ? w.end : Clock::now()) - w.start).count();
   p.restarts = restarts_.load(std::memory_order_relaxed);
   return p;
 }

@@ -69,6 +69,7 @@ TEST(RenderSession, FinishedFilmEqualsRenderBitForBit) {
     EXPECT_EQ(p.phase, SessionPhase::Done);
     EXPECT_DOUBLE_EQ(p.fraction, 1.0);
     EXPECT_EQ(p.avgmax, progressive.avgmax);
+    EXPECT_EQ(session.progress().elapsedSeconds, p.elapsedSeconds); // the clock stopped
     // When done, the display shows the final picture.
     SessionImage image;
     ASSERT_TRUE(session.copyImage(image));

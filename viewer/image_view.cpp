@@ -33,24 +33,31 @@ ImageLayout layoutImage(float windowWidth, float windowHeight, float panelWidth,
   return l;
 }
 
-void navigateWithMouse(ViewController& c, const ImageLayout& l) {
+void navigateWithMouse(ViewController& c, const ImageLayout& l, ImageDrag& drag) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureMouse) return; // the panel has it
   const bool inside = io.MousePos.x >= 0.0f && io.MousePos.x < l.areaWidth &&
                       io.MousePos.y >= 0.0f && io.MousePos.y < l.areaHeight;
-  const double dx = double(io.MouseDelta.x) / double(l.zoom);
-  const double dy = double(io.MouseDelta.y) / double(l.zoom);
-  const bool moved = dx != 0.0 || dy != 0.0;
+  const bool onImage = inside && !io.WantCaptureMouse; // not over or busy with the panel
   const CameraSpec& camera = c.scene().camera;
-  if (moved && ImGui::IsMouseDown(ImGuiMouseButton_Left) && !io.KeyShift) {
+  if (drag.button < 0) {
+    for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
+      if (onImage && ImGui::IsMouseClicked(button)) drag.button = button;
+    if (onImage && io.MouseWheel != 0.0f)
+      c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
+    return;
+  }
+  if (!ImGui::IsMouseDown(drag.button)) {
+    drag.button = -1;
+    return;
+  }
+  const double dx = double(io.MouseDelta.x) / double(l.zoom); // image pixels
+  const double dy = double(io.MouseDelta.y) / double(l.zoom);
+  if (dx == 0.0 && dy == 0.0) return;
+  if (drag.button == ImGuiMouseButton_Left && !io.KeyShift) {
     // Dragging right turns the scene right: the eye goes the other way.
     c.setCamera(orbit(camera, -dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel));
-  } else if (moved && (ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
-                       ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
-                       (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))) {
+  } else {
     c.setCamera(pan(camera, dx, dy, c.settings().height));
-  } else if (inside && io.MouseWheel != 0.0f) {
-    c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
   }
 }
 

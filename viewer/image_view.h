@@ -23,9 +23,16 @@ inline constexpr float kStatusHeight = 24.0f;
 ImageLayout layoutImage(float windowWidth, float windowHeight, float panelWidth, int imageWidth,
                         int imageHeight);
 
+// A mouse drag that began on the image (not on the panel): which button.
+struct ImageDrag {
+  int button = -1; // ImGuiMouseButton, or -1 when no drag is under way
+};
+
 // Orbit (left drag), pan (right or middle drag, or shift + left drag) and zoom
-// (wheel) when the mouse works on the image rather than on the panel.
-void navigateWithMouse(ViewController& controller, const ImageLayout& layout);
+// (wheel) when the mouse works on the image rather than on the panel. A drag
+// moves the camera from the frame after the button went down, so the jump of
+// the pointer to where it was pressed never counts as motion.
+void navigateWithMouse(ViewController& controller, const ImageLayout& layout, ImageDrag& drag);
 
 // Numbered circles where the lights are, in the colour of their intensity.
 void drawLightMarkers(const ViewController& controller, const ImageLayout& layout);

@@ -120,6 +120,7 @@ private:
   ViewController controller_;
   ImageDisplay display_;
   PanelState panel_;
+  ImageDrag drag_;
   FrameStats frames_;
   std::optional<ScriptRunner> script_;
   bool quit_ = false;
@@ -174,7 +175,7 @@ void ViewApp::frame() {
   const ImageLayout layout =
       layoutImage(size.x, size.y, kPanelWidth, display_.width(), display_.height());
   handleShortcuts(controller_, panel_);
-  navigateWithMouse(controller_, layout);
+  navigateWithMouse(controller_, layout, drag_);
   drawControlPanel(controller_, panel_, frames_, size.x, size.y);
   if (panel_.markers) drawLightMarkers(controller_, layout);
   drawStatusLine(controller_, layout);

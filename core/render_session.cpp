@@ -190,7 +190,8 @@ void RenderSession::run(Work& work, bool keepPass1) {
               for (const Sample& sample : samples) {
                 work.film.centre[sample.index] = sample.radiance;
                 work.film.radiance[sample.index] = sample.radiance;
-                work.sumMax += double(std::max({sample.radiance.r, sample.radiance.g, sample.radiance.b}));
+                work.sumMax +=
+                    double(std::max({sample.radiance.r, sample.radiance.g, sample.radiance.b}));
                 const int x = int(sample.index % std::size_t(s.width));
                 const int y = int(sample.index / std::size_t(s.width));
                 for (int by = y; by < std::min(y + level, s.height); ++by) {
@@ -230,8 +231,8 @@ void RenderSession::run(Work& work, bool keepPass1) {
           if (cancelled()) return;
           for (int x = tile.x0; x < tile.x1; ++x) {
             if (!needsSupersampling(work.film, x, y, avgmax, s.thresh)) continue;
-            samples.push_back({work.film.index(x, y),
-                               supersamplePixel(tracer, camera, x, y, s.jitter, counts)});
+            samples.push_back(
+                {work.film.index(x, y), supersamplePixel(tracer, camera, x, y, s.jitter, counts)});
           }
         }
         publish([&] {
@@ -285,7 +286,8 @@ SessionProgress RenderSession::progress() const {
   p.liveAvgmax = w.pass1Pixels > 0 ? w.sumMax / double(w.pass1Pixels) : 0.0;
   p.avgmax = w.phase == SessionPhase::Coarse ? p.liveAvgmax : w.avgmax;
   p.counts = w.counts;
-  p.elapsedSeconds = std::chrono::duration<double>((w.done ? w.end : Clock::now()) - w.start).count();
+  p.elapsedSeconds =
+      std::chrono::duration<double>((w.done ? w.end : Clock::now()) - w.start).count();
   p.restarts = restarts_.load(std::memory_order_relaxed);
   return p;
 }

@@ -70,19 +70,6 @@ constexpr int kMaxResolution = 32768;
 constexpr std::uint64_t kMaxPolygonVertices = std::numeric_limits<std::uint32_t>::max();
 
 // ---------------------------------------------------------------------------
-// Files
-
-// The same file reached by different spellings of its path gets one identity, for
-// include-cycle detection, the contents cache and Scene::files.
-fs::path identityOf(const fs::path& path) {
-  std::error_code ec;
-  fs::path canonical = fs::weakly_canonical(path, ec);
-  if (!ec) return canonical;
-  canonical = fs::absolute(path, ec);
-  return ec ? path.lexically_normal() : canonical.lexically_normal();
-}
-
-// ---------------------------------------------------------------------------
 // Parser
 
 struct TooManyErrors {}; // unwinds the parse once the diagnostic cap is reached

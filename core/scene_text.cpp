@@ -152,8 +152,6 @@ std::optional<std::string> readFile(const fs::path& path, bool regularOnly, std:
   return std::nullopt;
 }
 
-// The same file reached by different spellings of its path gets one identity, for
-// include-cycle detection, the contents cache and Scene::files.
 fs::path identityOf(const fs::path& path) {
   std::error_code ec;
   fs::path canonical = fs::weakly_canonical(path, ec);

@@ -134,4 +134,8 @@ private:
 std::optional<std::string> readFile(const std::filesystem::path& path, bool regularOnly,
                                     std::string& out, std::size_t maxBytes = kMaxSceneBytes);
 
+// The same file reached by different spellings of its path gets one identity, for
+// include-cycle detection, the contents cache and Scene::files.
+std::filesystem::path identityOf(const std::filesystem::path& path);
+
 } // namespace prism

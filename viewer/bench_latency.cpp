@@ -22,7 +22,8 @@ double millisecondsSince(Clock::time_point start) {
 // Spins until `done` holds. A benchmark may poll: it measures the session, it
 // does not synchronise with it.
 template <class Predicate> void waitUntil(const RenderSession& session, Predicate done) {
-  while (!done(session.progress())) std::this_thread::yield();
+  while (!done(session.progress()))
+    std::this_thread::yield();
 }
 
 struct Summary {

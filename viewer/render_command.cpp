@@ -11,6 +11,8 @@
 #include "core/system_info.h"
 #include "core/tracer.h"
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -36,8 +38,8 @@ int printPixelTree(const Scene& scene, const Accel& accel, const RenderSettings&
   std::cout << "pixel (" << x << ", " << y << ") of " << settings.width << " x " << settings.height
             << ", max depth " << settings.maxDepth << ": centre ray\n";
   printRayTree(std::cout, root, scene);
-  std::cout << "rays: 1 eye, " << counts.shadow << " shadow, " << counts.reflected
-            << " reflected, " << counts.transmitted << " transmitted (" << counts.tirEvents
+  std::cout << "rays: 1 eye, " << counts.shadow << " shadow, " << counts.reflected << " reflected, "
+            << counts.transmitted << " transmitted (" << counts.tirEvents
             << " total internal reflections)\n";
   return kExitOk;
 }
@@ -51,6 +53,50 @@ void writeText(const std::string& path, const std::string& text) {
 
 } // namespace
 
+void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& o) {
+  command
+      .add_option("--depth", o.depth, "Maximum ray depth D >= 1 (1: ray casting with shadows) [5]")
+      ->check(CLI::Range(1, 1000));
+  command.add_option("--thresh", o.thresh, "Antialiasing threshold in [0, 1]")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command.add_option("--size", o.size, "Image size W H (overrides the scene's resolution)")
+      ->expected(2)
+      ->check(CLI::Range(1, 32768));
+  command.add_option("--threads", o.threads, "Render threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
+  command.add_flag("--jitter", o.jitter, "Jitter the 16 sub-samples within their cells");
+  command
+      .add_option("--accel", o.accel,
+                  "Ray acceleration: bvh (SAH hierarchy, default), groups (the push/pop "
+                  "hierarchy) or none (test every primitive)")
+      ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case));
+}
+
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
+  CLI::App* command = app.add_subcommand("render", "Render a scene to an image file, headless");
+  command->add_option("scene", o.scene, "Scene file (.sc, .nff or .obj)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", o.output,
+                      "Output image: .tif/.tiff (8-bit RGB), .png, .exr (float radiance), ...");
+  addRenderSettingsOptions(*command, o);
+  command->add_flag("--float", o.floatTiff,
+                    "Write float radiance before exposure (implied by .exr and .hdr)");
+  command->add_option("--stats-json", o.statsJson,
+                      "Also write the statistics as JSON to this file");
+  command->add_option("--pixel", o.pixel, "Print the ray tree of pixel X Y instead of rendering")
+      ->expected(2)
+      ->check(CLI::NonNegativeNumber);
+  command->add_flag("-q,--quiet", o.quiet, "No progress and no statistics on stderr");
+  command->callback([&o] {
+    if (o.pixel.empty() && o.output.empty())
+      throw CLI::RequiredError("-o,--output (unless --pixel is given)");
+  });
+  return command;
+}
+
 int runRenderCommand(const RenderCommandOptions& o) {
   const auto loadStart = Clock::now();
   Scene scene;
@@ -58,10 +104,12 @@ int runRenderCommand(const RenderCommandOptions& o) {
   try {
     scene = loadAnyScene(o.scene, &warnings);
   } catch (const SceneError& error) {
-    for (const Diagnostic& d : error.diagnostics()) std::cerr << d.format() << "\n";
+    for (const Diagnostic& d : error.diagnostics())
+      std::cerr << d.format() << "\n";
     return kExitUsage;
   }
-  for (const Diagnostic& d : warnings) std::cerr << formatWarning(d) << "\n";
+  for (const Diagnostic& d : warnings)
+    std::cerr << formatWarning(d) << "\n";
   const double loadSeconds = secondsSince(loadStart);
 
   RenderSettings settings;
@@ -73,8 +121,8 @@ int runRenderCommand(const RenderCommandOptions& o) {
   settings.threads = resolveThreadCount(o.threads);
 
   if (!o.pixel.empty() && (o.pixel[0] >= settings.width || o.pixel[1] >= settings.height)) {
-    std::cerr << "prism: error: --pixel " << o.pixel[0] << " " << o.pixel[1]
-              << " is outside the " << settings.width << " x " << settings.height << " image\n";
+    std::cerr << "prism: error: --pixel " << o.pixel[0] << " " << o.pixel[1] << " is outside the "
+              << settings.width << " x " << settings.height << " image\n";
     return kExitUsage;
   }
   try {
@@ -95,8 +143,7 @@ int runRenderCommand(const RenderCommandOptions& o) {
   RenderResult result;
   {
     ProgressReporter reporter(!o.quiet);
-    result = render(scene, *accel, settings,
-                    [&](const RenderProgress& p) { reporter.update(p); });
+    result = render(scene, *accel, settings, [&](const RenderProgress& p) { reporter.update(p); });
   }
   stats.wallSeconds = secondsSince(renderStart);
   stats.cpuSeconds = processCpuSeconds() - cpuStart;

@@ -37,19 +37,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
       ->check(CLI::ExistingFile);
   view->add_option("-o,--output", r.output,
                    "Where Save writes (and the headless fallback) [SCENE-STEM.tiff]");
-  view->add_option("--depth", r.depth, "Maximum ray depth D >= 1 [5]")->check(CLI::Range(1, 1000));
-  view->add_option("--thresh", r.thresh, "Antialiasing threshold in [0, 1]")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  view->add_option("--size", r.size, "Image size W H (overrides the scene's resolution)")
-      ->expected(2)
-      ->check(CLI::Range(1, 32768));
-  view->add_option("--threads", r.threads, "Render threads (0: all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
-  view->add_flag("--jitter", r.jitter, "Jitter the 16 sub-samples within their cells");
-  view->add_option("--accel", r.accel, "Ray acceleration: bvh (default), groups or none")
-      ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case));
+  addRenderSettingsOptions(*view, r);
   view->add_flag("-q,--quiet", r.quiet, "Headless fallback: no progress and no statistics");
   view->add_option("--script", o.script,
                    "Run a scripted session from FILE (waits, edits, save, screenshot, quit)")

@@ -1,6 +1,7 @@
 #include "bench_command.h"
 
 #include "bench_latency.h"
+#include "load_scene.h"
 #include "bench_measure.h"
 #include "render_command.h"
 
@@ -94,14 +95,9 @@ void benchScenes(const BenchCommandOptions& o, int allThreads) {
   for (const std::string& path : o.scenes) {
     const std::string name = std::filesystem::path(path).filename().string();
     std::cerr << "bench: " << name << "\n";
-    Scene scene;
-    try {
-      scene = loadAnyScene(path);
-    } catch (const SceneError& error) {
-      for (const Diagnostic& d : error.diagnostics())
-        std::cerr << d.format() << "\n";
-      continue;
-    }
+    const std::optional<Scene> loaded = loadSceneReporting(path);
+    if (!loaded) continue;
+    const Scene& scene = *loaded;
     RenderSettings settings;
     settings.width = settings.height = o.size;
     settings.maxDepth = o.depth;

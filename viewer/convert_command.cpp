@@ -1,5 +1,6 @@
 #include "convert_command.h"
 
+#include "load_scene.h"
 #include "render_command.h"
 
 #include "core/scene_loader.h"
@@ -27,17 +28,9 @@ int runConvertCommand(const ConvertCommandOptions& o) {
               << "' names another format\n";
     return kExitUsage;
   }
-  Scene scene;
-  std::vector<Diagnostic> warnings;
-  try {
-    scene = loadAnyScene(o.input, &warnings);
-  } catch (const SceneError& error) {
-    for (const Diagnostic& d : error.diagnostics())
-      std::cerr << d.format() << "\n";
-    return kExitUsage;
-  }
-  for (const Diagnostic& d : warnings)
-    std::cerr << formatWarning(d) << "\n";
+  const std::optional<Scene> loaded = loadSceneReporting(o.input);
+  if (!loaded) return kExitUsage;
+  const Scene& scene = *loaded;
   try {
     saveScene(o.output, scene, "Converted by prism convert from " + o.input);
   } catch (const std::exception& error) {

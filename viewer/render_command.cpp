@@ -1,5 +1,6 @@
 #include "render_command.h"
 
+#include "load_scene.h"
 #include "progress.h"
 
 #include "core/exposure.h"
@@ -99,17 +100,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
 
 int runRenderCommand(const RenderCommandOptions& o) {
   const auto loadStart = Clock::now();
-  Scene scene;
-  std::vector<Diagnostic> warnings;
-  try {
-    scene = loadAnyScene(o.scene, &warnings);
-  } catch (const SceneError& error) {
-    for (const Diagnostic& d : error.diagnostics())
-      std::cerr << d.format() << "\n";
-    return kExitUsage;
-  }
-  for (const Diagnostic& d : warnings)
-    std::cerr << formatWarning(d) << "\n";
+  const std::optional<Scene> loaded = loadSceneReporting(o.scene);
+  if (!loaded) return kExitUsage;
+  const Scene& scene = *loaded;
   const double loadSeconds = secondsSince(loadStart);
 
   RenderSettings settings;

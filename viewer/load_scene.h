@@ -1,0 +1,15 @@
+// Loading a scene for a command-line command: errors and warnings go to stderr
+// in the FILE:LINE:COLUMN form, and the caller only decides what a failure means.
+#pragma once
+
+#include "core/scene.h"
+
+#include <optional>
+#include <string>
+
+namespace prism {
+
+// The scene at `path` (.sc, .nff or .obj), or nothing after printing why not.
+std::optional<Scene> loadSceneReporting(const std::string& path);
+
+} // namespace prism

@@ -1,5 +1,6 @@
 #include "core/bvh.h"
 
+#include "core/bvh_node_test.h"
 #include "core/sah_builder.h"
 
 #include <algorithm>
@@ -11,19 +12,9 @@ namespace prism {
 
 namespace {
 
-constexpr std::uint32_t kKindShift = 29; // 3 bits of PrimitiveKind, 29 of index
-constexpr std::uint32_t kIndexMask = (1u << kKindShift) - 1;
-constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
+using namespace bvh_detail;
 
-// Four lanes: GCC/Clang vector extensions, which compile to SSE2 pairs on any
-// x86-64 and to single AVX instructions where the compiler may use them. The
-// helpers taking and returning them are internal to this file and inlined, so
-// GCC's note that such values are passed differently with AVX is moot.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-using V4d = double __attribute__((vector_size(32)));
-using V4f = float __attribute__((vector_size(16)));
+constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
 
 // Single-precision bounds that contain the double-precision ones.
 float roundDown(double x) {
@@ -40,18 +31,6 @@ float roundUp(double x) {
 double halfArea(const Aabb& b) {
   const Vec3 e = b.extent();
   return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
-V4d loadBounds(const float* p) {
-  V4f f;
-  std::memcpy(&f, p, sizeof f);
-  return __builtin_convertvector(f, V4d);
-}
-
-V4d broadcast(double x) { return V4d{x, x, x, x}; }
-
-PrimitiveRef decode(std::uint32_t code) {
-  return {PrimitiveKind(code >> kKindShift), code & kIndexMask};
 }
 
 } // namespace
@@ -141,16 +120,7 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
 template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   if (nodes_.empty()) return false;
-  // Per ray, once: reciprocal directions, and which bound of each axis a ray
-  // meets first (the lower one when travelling toward +axis).
-  const Vec3 invDir = 1.0 / ray.dir;
-  const V4d origin[3] = {broadcast(ray.origin.x), broadcast(ray.origin.y), broadcast(ray.origin.z)};
-  const V4d inv[3] = {broadcast(invDir.x), broadcast(invDir.y), broadcast(invDir.z)};
-  int nearRow[3], farRow[3];
-  for (int a = 0; a < 3; ++a) {
-    nearRow[a] = 2 * a + (invDir[a] < 0.0 ? 1 : 0);
-    farRow[a] = 2 * a + (invDir[a] < 0.0 ? 0 : 1);
-  }
+  const NodeRay nodeRay(ray);
 
   struct Entry {
     std::uint32_t ref;
@@ -159,7 +129,7 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
   Entry local[kLocalStack];
   std::vector<Entry> heap; // only for trees deeper than the local stack allows
   Entry* stack = local;
-  if (std::size_t need = 3 * std::size_t(depth_) + 1; need > kLocalStack) {
+  if (std::size_t need = stackDepth(); need > kLocalStack) {
     heap.resize(need);
     stack = heap.data();
   }
@@ -169,21 +139,15 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
   for (;;) {
     if ((ref & kLeafBit) == 0) {
       const Node& node = nodes_[ref];
-      V4d tNear = broadcast(range.min);
-      V4d tFar = broadcast(range.max);
-      for (int a = 0; a < 3; ++a) {
-        const V4d t0 = (loadBounds(node.bounds[nearRow[a]]) - origin[a]) * inv[a];
-        const V4d t1 = (loadBounds(node.bounds[farRow[a]]) - origin[a]) * inv[a];
-        // Written so a NaN (0 * inf, for a ray lying in a box's face plane)
-        // leaves the range unchanged: that axis does not cull.
-        tNear = t0 > tNear ? t0 : tNear;
-        tFar = t1 < tFar ? t1 : tFar;
-      }
-      const auto hitMask = tNear <= tFar;
+      Lanes tFar;
+      const Lanes tNear = nodeRay.enter(node, range, tFar);
+      const unsigned hitMask = lessEqualMask(tNear, tFar);
+      double tEnter[4];
+      store(tEnter, tNear);
       Entry hits[4];
       int n = 0;
       for (int i = 0; i < 4; ++i)
-        if (hitMask[i]) hits[n++] = {node.child[i], tNear[i]};
+        if ((hitMask >> i) & 1u) hits[n++] = {node.child[i], tEnter[i]};
       if (n > 0) {
         // Nearest first: sort the few hits, push all but the nearest, farthest
         // deepest, and descend into the nearest at once.
@@ -199,7 +163,7 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
       const std::uint32_t first = ref & kFirstMask;
       const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
       for (std::uint32_t i = first; i < end; ++i) {
-        const PrimitiveRef prim = decode(refs_[i]);
+        const PrimitiveRef prim = decodeRef(refs_[i]);
         if (skip != nullptr && prim == *skip) continue;
         double t;
         if (intersectPrimitive(scene_, prim, ray, range, t)) {

@@ -32,18 +32,9 @@ bool nearestQuadricRoot(const Vec3& f, const Vec3& d, double r2, Interval range,
   return false;
 }
 
-// Projection of a point onto the two axes kept by a polygon.
-struct Point2 {
-  double u, v;
-};
-
-Point2 project(const Vec3& p, int dropAxis) {
-  switch (dropAxis) {
-  case 0: return {p.y, p.z};
-  case 1: return {p.z, p.x};
-  default: return {p.x, p.y};
-  }
-}
+// The two axes a polygon keeps when its dropAxis is dropped, in the order
+// that keeps the projection's orientation (u, v) = (y, z), (z, x), (x, y).
+constexpr int kProjectedAxes[3][2] = {{1, 2}, {2, 0}, {0, 1}};
 
 // Newell's method: a normal whose length is twice the polygon's area and whose
 // direction follows the right-hand rule, for convex and concave polygons alike.
@@ -81,19 +72,25 @@ bool intersect(const Polygon& p, const Vec3* vertices, const Ray& ray, Interval 
   // above when v > p.v, a crossing counts when p.u < x) make a point on an edge
   // shared by two coplanar polygons belong to exactly one of them, and each edge
   // is evaluated from its lower endpoint so both polygons compute the same x.
-  const Point2 q = project(ray.at(tp), p.dropAxis);
+  // Every edge's x is computed and then counted or not, without a branch: which
+  // edges cross is as good as random from one ray to the next, and mispredicted
+  // branches cost more than the divisions (x is used only where the edge
+  // crosses, so a 0/0 elsewhere does no harm).
+  const int uAxis = kProjectedAxes[p.dropAxis][0], vAxis = kProjectedAxes[p.dropAxis][1];
+  const Vec3 point = ray.at(tp);
+  const double qu = point[uAxis], qv = point[vAxis];
   const Vec3* v = vertices + p.firstVertex;
+  double au = v[p.vertexCount - 1][uAxis], av = v[p.vertexCount - 1][vAxis];
   bool inside = false;
-  Point2 a = project(v[p.vertexCount - 1], p.dropAxis);
   for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
-    const Point2 b = project(v[i], p.dropAxis);
-    if ((a.v > q.v) != (b.v > q.v)) {
-      const Point2& lo = a.v < b.v ? a : b;
-      const Point2& hi = a.v < b.v ? b : a;
-      const double x = lo.u + (q.v - lo.v) * (hi.u - lo.u) / (hi.v - lo.v);
-      if (q.u < x) inside = !inside;
-    }
-    a = b;
+    const double bu = v[i][uAxis], bv = v[i][vAxis];
+    const bool aLower = av < bv;
+    const double loU = aLower ? au : bu, loV = aLower ? av : bv;
+    const double hiU = aLower ? bu : au, hiV = aLower ? bv : av;
+    const double x = loU + (qv - loV) * (hiU - loU) / (hiV - loV);
+    inside ^= ((av > qv) != (bv > qv)) & (qu < x);
+    au = bu;
+    av = bv;
   }
   if (inside) t = tp;
   return inside;
@@ -115,7 +112,8 @@ Aabb boundsOf(const Sphere& s) {
 
 Aabb boundsOf(const Polygon& p, const Vec3* vertices) {
   Aabb box;
-  for (std::uint32_t i = 0; i < p.vertexCount; ++i) box.extend(vertices[p.firstVertex + i]);
+  for (std::uint32_t i = 0; i < p.vertexCount; ++i)
+    box.extend(vertices[p.firstVertex + i]);
   return box;
 }
 
@@ -147,7 +145,8 @@ std::optional<std::string> polygonProblem(std::span<const Vec3> vertices) {
   if (!(size > 0.0) || area <= 1e-12 * size * size) return "degenerate polygon (zero area)";
   const Vec3 unit = n / glm::length(n);
   Vec3 mean(0.0);
-  for (const Vec3& v : vertices) mean += v;
+  for (const Vec3& v : vertices)
+    mean += v;
   mean /= double(vertices.size());
   // Hand-written and generated files round coordinates; 1e-3 of the polygon's
   // size tolerates that and still catches a mistyped coordinate.
@@ -162,7 +161,8 @@ Polygon makePolygon(std::span<const Vec3> vertices) {
   p.vertexCount = std::uint32_t(vertices.size());
   p.normal = glm::normalize(newellNormal(vertices));
   Vec3 mean(0.0);
-  for (const Vec3& v : vertices) mean += v;
+  for (const Vec3& v : vertices)
+    mean += v;
   mean /= double(vertices.size());
   p.planeOffset = glm::dot(p.normal, mean);
   const Vec3 a = glm::abs(p.normal);

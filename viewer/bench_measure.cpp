@@ -1,6 +1,7 @@
 #include "bench_measure.h"
 
 #include "core/camera.h"
+#include "core/image_formation.h"
 #include "core/parallel.h"
 #include "core/system_info.h"
 #include "core/tracer.h"
@@ -121,12 +122,15 @@ RaySet recordRays(const Scene& scene, const Accel& accel, int width, int height,
   const Tracer tracer(scene, recorder, maxDepth);
   RayCounts counts;
   rays.eye.reserve(std::size_t(width) * std::size_t(height));
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const Ray ray = camera.eyeRay(x + 0.5, y + 0.5);
-      rays.eye.push_back({ray, Interval{}, {}, false});
-      recorder.nextIsEyeRay();
-      tracer.trace(ray, 1, counts);
+  // In the order the renderer traces them: tile by tile, rows within a tile.
+  for (const Tile& tile : makeTiles(width, height, RenderSettings{}.tileSize)) {
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        const Ray ray = camera.eyeRay(x + 0.5, y + 0.5);
+        rays.eye.push_back({ray, Interval{}, {}, false});
+        recorder.nextIsEyeRay();
+        tracer.trace(ray, 1, counts);
+      }
     }
   }
   return rays;

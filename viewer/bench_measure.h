@@ -21,7 +21,8 @@ struct RayQuery {
 };
 
 // The rays of a scene at a given image size: eye rays through every pixel
-// centre, and the shadow and secondary (reflected and transmitted) queries the
+// centre, in the renderer's order (core/image_formation.h: tile by tile), and
+// the shadow and secondary (reflected and transmitted) queries the
 // tracer makes for them at `maxDepth`, at most `cap` of each kind.
 struct RaySet {
   std::vector<RayQuery> eye, shadow, secondary;

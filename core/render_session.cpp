@@ -137,10 +137,15 @@ void RenderSession::setCamera(const CameraSpec& camera) {
 }
 
 void RenderSession::setScene(Scene scene) {
-  stopWorkers();
   auto next = std::make_unique<Scene>(std::move(scene));
-  accel_ = makeAccel(*next, accelKind_);
-  scene_ = std::move(next);
+  auto accel = makeAccel(*next, accelKind_); // while the old scene still renders
+  setScene(std::move(next), std::move(accel));
+}
+
+void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel) {
+  stopWorkers();
+  accel_ = std::move(accel); // refers to *scene, so both change together
+  scene_ = std::move(scene);
   ++restarts_;
   startWorkers(false);
 }

@@ -42,13 +42,13 @@ enum class SessionPhase {
 // A consistent view of how far the render got, for live statistics.
 struct SessionProgress {
   SessionPhase phase = SessionPhase::Coarse;
-  int level = 8;              // block size of the coarse level in progress (8, 4, 2, 1)
-  double fraction = 0.0;      // of the whole render (pass 1 and pass 2), 0..1
-  long long pass1Pixels = 0;  // pixel centres traced so far
+  int level = 8;             // block size of the coarse level in progress (8, 4, 2, 1)
+  double fraction = 0.0;     // of the whole render (pass 1 and pass 2), 0..1
+  long long pass1Pixels = 0; // pixel centres traced so far
   long long supersampledPixels = 0;
-  double liveAvgmax = 0.0;    // mean of max(r,g,b) over the pixel centres traced so far
-  double avgmax = 0.0;        // pass 1's avgmax once pass 1 is complete, else liveAvgmax
-  RayCounts counts;           // rays traced since the last restart
+  double liveAvgmax = 0.0; // mean of max(r,g,b) over the pixel centres traced so far
+  double avgmax = 0.0;     // pass 1's avgmax once pass 1 is complete, else liveAvgmax
+  RayCounts counts;        // rays traced since the last restart
   double elapsedSeconds = 0.0;
   std::uint64_t restarts = 0; // how many times an edit restarted the render
 };
@@ -86,12 +86,16 @@ public:
   void setAmbient(const Color& ambient);
   void setCamera(const CameraSpec& camera);
   void setScene(Scene scene); // a reloaded scene: new geometry, new hierarchy
+  // The same with the hierarchy already built (by makeAccel(*scene,
+  // accelKind()), on another thread: for 10^6 primitives that takes a second).
+  void setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel);
+  AccelKind accelKind() const { return accelKind_; }
 
   // The current state (copies; safe from any thread).
   RenderSettings settings() const;
   Scene sceneCopy() const;
   const std::vector<Light>& lights() const { return scene_->lights; } // UI thread only
-  const Scene& scene() const { return *scene_; }                     // UI thread only
+  const Scene& scene() const { return *scene_; }                      // UI thread only
 
   // Bumps whenever workers publish new samples or the session restarts.
   std::uint64_t version() const { return version_.load(std::memory_order_acquire); }

@@ -5,6 +5,7 @@
 #include "viewer/view_controller.h"
 
 #include "core/exposure.h"
+#include "core/scene_loader.h"
 #include "core/scene_parser.h"
 
 #include "view_test_util.h"
@@ -104,6 +105,49 @@ TEST(ViewController, ReloadsChangedIncludesAndKeepsTheLastGoodSceneOnErrors) {
   EXPECT_TRUE(c.sceneErrors().empty());
   EXPECT_EQ(c.scene().lights.size(), 2u);
   updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+TEST(ViewController, ReloadsInTheBackgroundAndPutsTheSceneInPlaceOnUpdate) {
+  ScratchDir dir;
+  writeFile(dir / "main.sc", kMain);
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
+  const Scene scene = loadScene(dir / "main.sc");
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+
+  writeFile(dir / "lights.sc", "light 1 1 1 5 5 5\nlight 0 5 0 10 10 10\n");
+  c.reload();
+  c.reload(); // asked again while the first runs: read once more after it
+  EXPECT_TRUE(c.reloading());
+  // Only update() changes the scene, whenever the loader thread finishes.
+  EXPECT_EQ(c.scene().lights.size(), 1u);
+  updateUntil(c, [&] { return c.successfulReloads() == 1; });
+  EXPECT_EQ(c.scene().lights.size(), 2u);
+  updateUntil(c, [&] { return c.successfulReloads() == 2; });
+  EXPECT_FALSE(c.reloading());
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+  EXPECT_EQ(c.successfulReloads(), 2);
+  EXPECT_EQ(c.failedReloads(), 0);
+}
+
+TEST(ViewController, ShowsWhatLoadingTheSceneWarnedAbout) {
+  ScratchDir dir;
+  writeFile(dir / "main.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+                              "resolution 8 8\nl 1 1 1\nf 1 0 0 1 0 0 0 1\ns 0 0 0 1\n"
+                              "p 3 0 0 0 1 0 0 2 0 0\n");
+  std::vector<Diagnostic> warnings;
+  const Scene scene = loadAnyScene(dir / "main.nff", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  ViewController c(scene, optionsFor(scene, dir / "main.nff"), {formatWarning(warnings[0])});
+  ASSERT_EQ(c.sceneWarnings().size(), 1u);
+  EXPECT_NE(c.sceneWarnings()[0].find("main.nff:11:"), std::string::npos) << c.sceneWarnings()[0];
+  EXPECT_NE(c.sceneWarnings()[0].find("degenerate polygon"), std::string::npos);
+
+  // A reload reports the warnings of the files as they are now.
+  writeFile(dir / "main.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+                              "resolution 8 8\nl 1 1 1\nf 1 0 0 1 0 0 0 1\ns 0 0 0 1\n");
+  c.reload();
+  updateUntil(c, [&] { return c.successfulReloads() == 1; });
+  EXPECT_TRUE(c.sceneWarnings().empty());
 }
 
 TEST(ViewController, ResetCameraGoesBackToTheFile) {

@@ -27,6 +27,13 @@ void sceneSection(ViewController& c) {
   ImGui::TextColored(kDimColour, "%zu primitives, %zu lights", s.primitiveCount(), s.lights.size());
   ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 90.0f);
   if (ImGui::Button("Reload (R)", ImVec2(90.0f, 0.0f))) c.reload();
+  if (c.reloading()) ImGui::TextColored(kDimColour, "Reading the scene files...");
+  if (!c.sceneWarnings().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kDimColour);
+    for (const std::string& w : c.sceneWarnings())
+      ImGui::TextWrapped("%s", w.c_str());
+    ImGui::PopStyleColor();
+  }
   if (!c.sceneErrors().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
     ImGui::TextWrapped("The scene has errors; showing the last good one:");

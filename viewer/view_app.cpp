@@ -100,7 +100,7 @@ void styleImGui() {
 class ViewApp : public ScriptHost {
 public:
   ViewApp(GLFWwindow* window, Scene scene, const ViewAppOptions& options)
-      : window_(window), controller_(std::move(scene), options.view) {
+      : window_(window), controller_(std::move(scene), options.view, options.warnings) {
     panel_.savePath = options.view.savePath;
     if (options.script) script_.emplace(*options.script);
   }

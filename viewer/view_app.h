@@ -20,6 +20,7 @@ void closeWindowSystem();
 struct ViewAppOptions {
   ViewOptions view;
   std::optional<std::vector<ScriptAction>> script; // a scripted session
+  std::vector<std::string> warnings;               // loading the scene reported these
 };
 
 // Runs the previewer on `scene` until the window closes or the script quits,

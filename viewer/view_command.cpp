@@ -70,7 +70,12 @@ int runViewCommand(const ViewCommandOptions& o) {
   int code = kExitOk;
   try {
     if (!o.script.empty()) app.script = loadScript(o.script);
-    Scene scene = loadAnyScene(o.render.scene);
+    std::vector<Diagnostic> loadWarnings;
+    Scene scene = loadAnyScene(o.render.scene, &loadWarnings);
+    for (const Diagnostic& d : loadWarnings) {
+      app.warnings.push_back(formatWarning(d));
+      std::cerr << app.warnings.back() << "\n";
+    }
     ViewOptions& v = app.view;
     v.scenePath = o.render.scene;
     v.sizeFromScene = o.render.size.empty();

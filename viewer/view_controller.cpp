@@ -14,10 +14,15 @@ constexpr auto kPollInterval = std::chrono::milliseconds(500);
 
 } // namespace
 
-ViewController::ViewController(Scene scene, const ViewOptions& options)
-    : options_(options), fileCamera_(scene.camera) {
+ViewController::ViewController(Scene scene, const ViewOptions& options,
+                               std::vector<std::string> warnings)
+    : options_(options), fileCamera_(scene.camera), sceneWarnings_(std::move(warnings)) {
   watch_.watch(scene.files);
   session_ = std::make_unique<RenderSession>(std::move(scene), options.settings, options.accel);
+}
+
+ViewController::~ViewController() {
+  if (loading_.valid()) loading_.wait(); // the loader thread must not outlive what it reads
 }
 
 void ViewController::setSettings(const RenderSettings& settings) {
@@ -42,34 +47,58 @@ void ViewController::setCamera(const CameraSpec& camera) {
 
 void ViewController::resetCamera() { setCamera(fileCamera_); }
 
-bool ViewController::reload() {
-  Scene scene;
+ViewController::LoadedScene ViewController::load(const std::string& path, AccelKind accel) {
+  LoadedScene loaded;
   try {
-    scene = loadAnyScene(options_.scenePath);
+    std::vector<Diagnostic> warnings;
+    loaded.scene = std::make_unique<Scene>(loadAnyScene(path, &warnings));
+    for (const Diagnostic& d : warnings)
+      loaded.warnings.push_back(formatWarning(d));
+    loaded.accel = makeAccel(*loaded.scene, accel);
   } catch (const SceneError& error) {
-    sceneErrors_.clear();
-    for (const Diagnostic& d : error.diagnostics()) {
-      sceneErrors_.push_back(d.format());
-      std::cerr << sceneErrors_.back() << "\n"; // also for whoever runs it from a terminal
-    }
+    loaded.scene.reset();
+    for (const Diagnostic& d : error.diagnostics())
+      loaded.errors.push_back(d.format());
+  } catch (const std::exception& error) { // out of memory, too many primitives
+    loaded.scene.reset();
+    loaded.errors.push_back(path + ": error: " + error.what());
+  }
+  return loaded;
+}
+
+void ViewController::reload() {
+  if (loading_.valid()) {
+    reloadAgain_ = true;
+    return;
+  }
+  loading_ = std::async(std::launch::async, &ViewController::load, options_.scenePath,
+                        session_->accelKind());
+}
+
+void ViewController::apply(LoadedScene loaded) {
+  // Also for whoever runs the previewer from a terminal.
+  for (const std::string& line : loaded.errors.empty() ? loaded.warnings : loaded.errors)
+    std::cerr << line << "\n";
+  if (!loaded.scene) {
+    sceneErrors_ = std::move(loaded.errors);
     ++failedReloads_;
-    return false;
+    return;
   }
   sceneErrors_.clear();
-  watch_.watch(scene.files); // an edit may have added or dropped an include
-  fileCamera_ = scene.camera;
+  sceneWarnings_ = std::move(loaded.warnings);
+  watch_.watch(loaded.scene->files); // an edit may have added or dropped an include
+  fileCamera_ = loaded.scene->camera;
   if (options_.sizeFromScene) {
     RenderSettings s = session_->settings();
-    if (s.width != scene.width || s.height != scene.height) {
-      s.width = scene.width;
-      s.height = scene.height;
+    if (s.width != loaded.scene->width || s.height != loaded.scene->height) {
+      s.width = loaded.scene->width;
+      s.height = loaded.scene->height;
       session_->setSettings(s);
     }
   }
-  session_->setScene(std::move(scene));
+  session_->setScene(std::move(loaded.scene), std::move(loaded.accel));
   stale_ = true;
   ++successfulReloads_;
-  return true;
 }
 
 bool ViewController::update(Clock::time_point now) {
@@ -78,6 +107,13 @@ bool ViewController::update(Clock::time_point now) {
     // The watch keeps the last good scene's files (the main file among them),
     // so fixing a broken scene is noticed too.
     if (watch_.changed()) reload();
+  }
+  if (loading_.valid() && loading_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    apply(loading_.get());
+    if (reloadAgain_) {
+      reloadAgain_ = false;
+      reload();
+    }
   }
   save_.poll(*session_);
   progress_ = session_->progress(); // before the copy: the image has at least this much

@@ -242,6 +242,12 @@ private:
   std::optional<std::string> readInclude(const fs::path& path, const fs::path& identity,
                                          const std::string*& text);
   std::uint32_t fileIndex(const fs::path& identity, const std::string& name);
+  struct ResolvedInclude {
+    fs::path path;     // relative to the including file's folder, normalised
+    std::string name;  // path as a string, for messages and Scene::files
+    fs::path identity; // identityOf(path)
+  };
+  const ResolvedInclude& resolveInclude(std::string_view raw);
 
   Scene scene_;
   std::vector<Diagnostic> diagnostics_;
@@ -253,8 +259,9 @@ private:
   std::uint32_t group_ = 0;
   std::vector<Saved> saved_;
 
-  std::vector<std::unique_ptr<SourceFile>> files_; // the include stack, main file first
-  std::map<fs::path, std::string> contents_;       // every included file, read once
+  std::vector<std::unique_ptr<SourceFile>> files_;            // the include stack, main file first
+  std::map<fs::path, std::string> contents_;                  // every included file, read once
+  std::unordered_map<std::string, ResolvedInclude> includes_; // by including file and PATH
   std::map<fs::path, std::uint32_t> fileIndices_;
   std::size_t parsedBytes_ = 0;
 
@@ -799,6 +806,25 @@ std::uint32_t Parser::fileIndex(const fs::path& identity, const std::string& nam
   return it->second;
 }
 
+// Where an `include PATH` in the current file leads. identityOf costs several
+// system calls (it resolves links) and path arithmetic is slow too; a part
+// included 10^5 times (a leaf of a tree) is resolved once per scene, like its
+// text is read once.
+const Parser::ResolvedInclude& Parser::resolveInclude(std::string_view raw) {
+  std::string key = file().name;
+  key += '\0';
+  key += raw;
+  auto it = includes_.find(key);
+  if (it == includes_.end()) {
+    ResolvedInclude r;
+    r.path = (fs::path(file().name).parent_path() / fs::path(raw)).lexically_normal();
+    r.name = r.path.string();
+    r.identity = identityOf(r.path);
+    it = includes_.emplace(std::move(key), std::move(r)).first;
+  }
+  return it->second;
+}
+
 // The contents of an included file, read at most once per scene.
 std::optional<std::string> Parser::readInclude(const fs::path& path, const fs::path& identity,
                                                const std::string*& text) {
@@ -832,9 +858,10 @@ void Parser::include(Command& c) {
     skipNumbers();
     return;
   }
-  const fs::path path = (fs::path(file().name).parent_path() / fs::path(raw)).lexically_normal();
-  const std::string name = path.string();
-  const fs::path identity = identityOf(path);
+  const ResolvedInclude& resolved = resolveInclude(raw);
+  const fs::path& path = resolved.path;
+  const std::string& name = resolved.name;
+  const fs::path& identity = resolved.identity;
 
   for (std::size_t i = 0; i < files_.size(); ++i) {
     if (files_[i]->identity != identity) continue;

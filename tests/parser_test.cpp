@@ -472,6 +472,25 @@ TEST_F(ParserFiles, IncludePathsAreRelativeToTheIncludingFile) {
   EXPECT_EQ(s.spheres[1].origin.file, 3u);
 }
 
+TEST_F(ParserFiles, TheSamePathWrittenInTwoFoldersNamesTwoFiles) {
+  // Include paths are resolved once per including file and PATH: the same
+  // text in another folder must still lead to that folder's file.
+  write("main.sc", "include a/part.sc\ninclude b/part.sc\ninclude a/part.sc\n");
+  write("a/part.sc", "include leaf.sc\n");
+  write("b/part.sc", "include leaf.sc\n");
+  write("a/leaf.sc", "sphere 0 0 0 1\n");
+  write("b/leaf.sc", "sphere 5 0 0 2\n");
+  const Scene s = loadScene(dir_ / "main.sc");
+  ASSERT_EQ(s.spheres.size(), 3u);
+  EXPECT_EQ(s.spheres[0].radius, 1.0);
+  EXPECT_EQ(s.spheres[1].radius, 2.0);
+  EXPECT_EQ(s.spheres[2].radius, 1.0);
+  EXPECT_EQ(s.files,
+            (std::vector<std::string>{name("main.sc"), name("a/part.sc"), name("a/leaf.sc"),
+                                      name("b/part.sc"), name("b/leaf.sc")}));
+  EXPECT_EQ(s.spheres[2].origin.file, 2u);
+}
+
 TEST_F(ParserFiles, QuotedIncludePathMayHoldSpacesAndHashes) {
   write("main.sc", "include \"my part#1.sc\" # a comment\n"
                    "include\n"

@@ -19,6 +19,9 @@ plot \
   series("soup", "bvh") using 2:6 with linespoints lw 2 pt 7 lc 1 title "polygon soup, bvh", \
   series("soup", "groups") using 2:6 with linespoints lw 2 pt 5 lc 2 title "polygon soup, groups", \
   series("soup", "none") using 2:6 with linespoints lw 2 pt 9 lc 3 title "polygon soup, none", \
+  series("scaled-soup", "bvh") using 2:6 with linespoints lw 2 pt 7 lc 1 dt 3 title "scaled soup, bvh", \
+  series("scaled-soup", "groups") using 2:6 with linespoints lw 2 pt 5 lc 2 dt 3 title "scaled soup, groups", \
+  series("scaled-soup", "none") using 2:6 with linespoints lw 2 pt 9 lc 3 dt 3 title "scaled soup, none", \
   series("sphereflake", "bvh") using 2:6 with linespoints lw 2 pt 7 lc 1 dt 2 title "sphereflake, bvh", \
   series("sphereflake", "groups") using 2:6 with linespoints lw 2 pt 5 lc 2 dt 2 title "sphereflake, groups", \
   series("sphereflake", "none") using 2:6 with linespoints lw 2 pt 9 lc 3 dt 2 title "sphereflake, none"

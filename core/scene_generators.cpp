@@ -2,6 +2,8 @@
 
 #include "core/geometry.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <numbers>
@@ -126,7 +128,35 @@ Scene makeSphereflake(std::size_t spheres) {
   return scene;
 }
 
-Scene makePolygonSoup(std::size_t triangles, std::uint64_t seed) {
+namespace {
+
+// Spreads the low 21 bits of x so that two zero bits follow each one.
+std::uint64_t spreadBits(std::uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffull;
+  x = (x | x << 16) & 0x1f0000ff0000ffull;
+  x = (x | x << 8) & 0x100f00f00f00f00full;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+  x = (x | x << 2) & 0x1249249249249249ull;
+  return x;
+}
+
+// Position of a point of [-1, 1]^3 along the Morton (Z-order) curve.
+std::uint64_t mortonCode(const Vec3& p) {
+  auto cell = [](double x) {
+    return std::uint64_t(std::clamp((x + 1.0) * 0.5, 0.0, 1.0) * double((1 << 21) - 1));
+  };
+  return spreadBits(cell(p.x)) | spreadBits(cell(p.y)) << 1 | spreadBits(cell(p.z)) << 2;
+}
+
+struct SoupTriangle {
+  std::uint64_t order; // generation order, or Morton code of the centre
+  std::array<Vec3, 3> vertices;
+};
+
+// Equilateral triangles of circumradius `radius` with random centres in the
+// cube [-1, 1]^3 and random orientations, in a scene with a camera and lights.
+Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::uint64_t seed) {
   Scene scene;
   scene.files = {"(generated polygon soup)"};
   scene.camera.eye = Vec3(0.0, 0.0, 4.2);
@@ -137,17 +167,9 @@ Scene makePolygonSoup(std::size_t triangles, std::uint64_t seed) {
   scene.lights.push_back({Vec3(3, 4, 5), Color(40.0)});
   scene.lights.push_back({Vec3(-4, 2, 3), Color(12.0)});
   const std::uint32_t material = addMaterial(scene, Color(0.7, 0.75, 0.8), 0.8, 0.2, 20.0);
-  scene.polygons.reserve(triangles);
-  scene.polygonVertices.reserve(3 * triangles);
-  scene.groups[0].primitives.reserve(triangles);
 
-  // Equilateral triangles of circumradius s have area (3 sqrt 3 / 4) s^2; a
-  // total area of 64 in a cube of volume 8 gives a ray crossing the cube
-  // (length 2) about 2 * 64 / 8 / 2 = 8 crossings.
-  const double s =
-      std::sqrt(64.0 / double(std::max<std::size_t>(1, triangles)) / (0.75 * std::sqrt(3.0)));
+  std::vector<SoupTriangle> soup(triangles);
   Rng rng(seed);
-  std::vector<Vec3> v(3);
   for (std::size_t i = 0; i < triangles; ++i) {
     const Vec3 c(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
     Vec3 e1, e2;
@@ -155,11 +177,40 @@ Scene makePolygonSoup(std::size_t triangles, std::uint64_t seed) {
     const double phase = rng.uniform(0.0, 2.0 * std::numbers::pi);
     for (int k = 0; k < 3; ++k) {
       const double a = phase + k * 2.0 * std::numbers::pi / 3.0;
-      v[std::size_t(k)] = c + s * (std::cos(a) * e1 + std::sin(a) * e2);
+      soup[i].vertices[std::size_t(k)] = c + radius * (std::cos(a) * e1 + std::sin(a) * e2);
     }
+    soup[i].order = spatialOrder ? mortonCode(c) : i;
+  }
+  std::stable_sort(soup.begin(), soup.end(),
+                   [](const SoupTriangle& a, const SoupTriangle& b) { return a.order < b.order; });
+
+  scene.polygons.reserve(triangles);
+  scene.polygonVertices.reserve(3 * triangles);
+  scene.groups[0].primitives.reserve(triangles);
+  std::vector<Vec3> v(3);
+  for (const SoupTriangle& t : soup) {
+    v.assign(t.vertices.begin(), t.vertices.end());
     addPolygon(scene, v, material, 0);
   }
   return scene;
+}
+
+} // namespace
+
+Scene makePolygonSoup(std::size_t triangles, std::uint64_t seed) {
+  // Equilateral triangles of circumradius s have area (3 sqrt 3 / 4) s^2; a
+  // total area of 64 in a cube of volume 8 gives a ray crossing the cube
+  // (length 2) about 2 * 64 / 8 / 2 = 8 crossings.
+  const double s =
+      std::sqrt(64.0 / double(std::max<std::size_t>(1, triangles)) / (0.75 * std::sqrt(3.0)));
+  return polygonSoup(triangles, s, false, seed);
+}
+
+Scene makeScaledPolygonSoup(std::size_t triangles, std::uint64_t seed) {
+  // Three quarters of the mean spacing (8 / n)^(1/3): at 10^4 the same size as
+  // makePolygonSoup's triangles.
+  const double s = 0.75 * std::cbrt(8.0 / double(std::max<std::size_t>(1, triangles)));
+  return polygonSoup(triangles, s, true, seed);
 }
 
 } // namespace prism

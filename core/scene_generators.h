@@ -21,4 +21,13 @@ Scene makeSphereflake(std::size_t spheres);
 // changes only through the hierarchy, not through the picture. One group.
 Scene makePolygonSoup(std::size_t triangles, std::uint64_t seed = 1);
 
+// The same soup at a finer grain: each triangle as big as the mean spacing
+// between them (circumradius 0.75 (8 / n)^(1/3)), so the neighbourhood of a
+// ray's first hit looks alike at any count and only the hierarchy's depth
+// grows. (In makePolygonSoup the triangles shrink faster than their spacing,
+// so the boxes a ray passes close to without a hit grow in number as n^(1/3),
+// whatever the hierarchy.) Stored in the Morton order of their centres,
+// spatially coherent as the triangles of a mesh file usually are.
+Scene makeScaledPolygonSoup(std::size_t triangles, std::uint64_t seed = 1);
+
 } // namespace prism

@@ -315,7 +315,8 @@ TEST(Accel, GeneratedScenesMatchBruteForce) {
   std::mt19937 rng(2025);
   std::uniform_real_distribution<double> u(-1, 1);
   Tally tally;
-  for (const Scene& scene : {makePolygonSoup(3000, 7), makeSphereflake(820)}) {
+  for (const Scene& scene :
+       {makePolygonSoup(3000, 7), makeScaledPolygonSoup(3000, 5), makeSphereflake(820)}) {
     const auto accels = accelerated(scene);
     const auto brute = makeAccel(scene, AccelKind::None);
     for (int i = 0; i < 600; ++i) {
@@ -422,6 +423,36 @@ TEST(SahBuilder, EveryBoxInExactlyOneLeafInsideItsAncestors) {
   for (int s : seen)
     EXPECT_EQ(s, 1);
   EXPECT_LT(tree.depth, 60);
+}
+
+TEST(Generators, TheScaledSoupIsTheSoupAtAFinerGrainStoredInSpatialOrder) {
+  for (std::size_t n : {1000u, 8000u}) {
+    const Scene scaled = makeScaledPolygonSoup(n);
+    const Scene random = makePolygonSoup(n);
+    ASSERT_EQ(scaled.polygons.size(), n);
+    ASSERT_EQ(random.polygons.size(), n);
+    // Circumradius three quarters of the mean spacing (8 / n)^(1/3).
+    const double radius = 0.75 * std::cbrt(8.0 / double(n));
+    auto centre = [](const Scene& s, std::size_t i) {
+      const Vec3* v = &s.polygonVertices[s.polygons[i].firstVertex];
+      return (v[0] + v[1] + v[2]) / 3.0;
+    };
+    double stepScaled = 0.0, stepRandom = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 c = centre(scaled, i);
+      EXPECT_LE(maxAbsComponent(c), 1.0);
+      EXPECT_NEAR(glm::distance(c, scaled.polygonVertices[scaled.polygons[i].firstVertex]), radius,
+                  1e-12);
+      if (i > 0) {
+        stepScaled += glm::distance(c, centre(scaled, i - 1));
+        stepRandom += glm::distance(centre(random, i), centre(random, i - 1));
+      }
+    }
+    // Neighbours in memory are neighbours in space: consecutive centres lie a
+    // few spacings apart, where random order puts them about a cube apart.
+    EXPECT_LT(stepScaled / double(n - 1), 4.0 * std::cbrt(8.0 / double(n)));
+    EXPECT_GT(stepRandom / double(n - 1), 1.0);
+  }
 }
 
 TEST(Bvh, AtMost64BytesPerPrimitive) {

@@ -32,8 +32,9 @@ class Cli : public ::testing::Test {
 protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("prism_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-            "_" + std::to_string(getpid()));
+           ("prism_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -124,8 +125,9 @@ TEST_F(Cli, UnwritableOutputExitsWith1BeforeRendering) {
 TEST_F(Cli, WritesAn8BitRgbTiffAndJsonStatistics) {
   const std::string s = write("s.sc", kSmallScene).string();
   const fs::path out = dir_ / "o.tiff", json = dir_ / "stats.json";
-  const CommandResult run = prism("render " + s + " -o " + out.string() + " --size 40 30 --depth 3 --thresh 0.2 " +
-                        "--stats-json " + json.string());
+  const CommandResult run =
+      prism("render " + s + " -o " + out.string() + " --size 40 30 --depth 3 --thresh 0.2 " +
+            "--stats-json " + json.string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.err.find("rays per pixel"), std::string::npos);
   EXPECT_NE(run.err.find("machine"), std::string::npos);
@@ -175,7 +177,8 @@ TEST_F(Cli, ExrKeepsFloatRadiance) {
   ASSERT_EQ(prism("render " + s + " -o " + out.string() + " --size 16 16 -q").exitCode, 0);
   auto in = OIIO::ImageInput::open(out.string());
   ASSERT_TRUE(in);
-  EXPECT_TRUE(in->spec().format == OIIO::TypeDesc::FLOAT || in->spec().format == OIIO::TypeDesc::HALF);
+  EXPECT_TRUE(in->spec().format == OIIO::TypeDesc::FLOAT ||
+              in->spec().format == OIIO::TypeDesc::HALF);
 }
 
 TEST_F(Cli, FloatFlagWritesRadianceTiff) {
@@ -205,7 +208,8 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
 TEST_F(Cli, RendersEveryShippedScene) {
   for (const char* name : {"table.sc", "glass.sc", "chex.sc", "tree.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
-    const CommandResult run = prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");
+    const CommandResult run =
+        prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");
     EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
     EXPECT_TRUE(fs::exists(out)) << name;
   }
@@ -220,6 +224,7 @@ TEST_F(Cli, BenchPrintsItsTablesAndScalingData) {
   EXPECT_NE(run.out.find("| s.sc | 1 | bvh |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| s.sc | 1 | none |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| soup | 1000 | bvh |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| scaled-soup | 1000 | bvh |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| sphereflake | 1001 | none |"), std::string::npos) << run.out;
   const std::string table = slurp(data);
   EXPECT_NE(table.find("soup 1000 bvh "), std::string::npos) << table;

@@ -1,8 +1,8 @@
 #include "bench_command.h"
 
 #include "bench_latency.h"
-#include "load_scene.h"
 #include "bench_measure.h"
+#include "load_scene.h"
 #include "render_command.h"
 
 #include "core/parallel.h"
@@ -179,11 +179,14 @@ void benchScaling(const BenchCommandOptions& o) {
             << "| scene | primitives | accel | build s | bytes/prim | eye ns/ray | shadow ns/ray "
                "|\n|---|---|---|---|---|---|---|\n";
   std::map<std::string, std::map<std::size_t, double>> bvhEye;
-  for (const char* generator : {"soup", "sphereflake"}) {
+  const std::vector<std::pair<std::string, Scene (*)(std::size_t)>> generators{
+      {"soup", [](std::size_t n) { return makePolygonSoup(n); }},
+      {"scaled-soup", [](std::size_t n) { return makeScaledPolygonSoup(n); }},
+      {"sphereflake", [](std::size_t n) { return makeSphereflake(n); }}};
+  for (const auto& [generator, make] : generators) {
     for (std::size_t n = 1000; n <= o.scalingMax; n *= 10) {
       std::cerr << "bench: " << generator << " " << n << "\n";
-      const Scene scene =
-          std::string(generator) == "soup" ? makePolygonSoup(n) : makeSphereflake(n);
+      const Scene scene = make(n);
       RaySet rays;
       {
         const auto reference = makeAccel(scene, AccelKind::Bvh);

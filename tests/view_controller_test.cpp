@@ -35,6 +35,13 @@ ViewOptions optionsFor(const Scene& scene, const fs::path& path) {
   return o;
 }
 
+// kMain and its include with one light, written to `dir`; returns the scene.
+Scene writeMainScene(const ScratchDir& dir) {
+  writeFile(dir / "main.sc", kMain);
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
+  return loadScene(dir / "main.sc");
+}
+
 // Calls update() until `done` holds (each call is one "frame").
 template <class Done> void updateUntil(ViewController& c, Done done) {
   auto now = ViewController::Clock::now();
@@ -63,9 +70,7 @@ TEST(FileWatch, ReportsEachChangeOnce) {
 
 TEST(ViewController, SaveWritesWhatAHeadlessRenderGives) {
   ScratchDir dir;
-  writeFile(dir / "main.sc", kMain);
-  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
-  Scene scene = loadScene(dir / "main.sc");
+  Scene scene = writeMainScene(dir);
   const ViewOptions options = optionsFor(scene, dir / "main.sc");
   const auto accel = makeAccel(scene, options.accel);
   const RenderResult expected = render(scene, *accel, options.settings);
@@ -86,9 +91,7 @@ TEST(ViewController, SaveWritesWhatAHeadlessRenderGives) {
 
 TEST(ViewController, ReloadsChangedIncludesAndKeepsTheLastGoodSceneOnErrors) {
   ScratchDir dir;
-  writeFile(dir / "main.sc", kMain);
-  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
-  const Scene scene = loadScene(dir / "main.sc");
+  const Scene scene = writeMainScene(dir);
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
   updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
 
@@ -109,9 +112,7 @@ TEST(ViewController, ReloadsChangedIncludesAndKeepsTheLastGoodSceneOnErrors) {
 
 TEST(ViewController, ReloadsInTheBackgroundAndPutsTheSceneInPlaceOnUpdate) {
   ScratchDir dir;
-  writeFile(dir / "main.sc", kMain);
-  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
-  const Scene scene = loadScene(dir / "main.sc");
+  const Scene scene = writeMainScene(dir);
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
 
   writeFile(dir / "lights.sc", "light 1 1 1 5 5 5\nlight 0 5 0 10 10 10\n");
@@ -152,9 +153,7 @@ TEST(ViewController, ShowsWhatLoadingTheSceneWarnedAbout) {
 
 TEST(ViewController, ResetCameraGoesBackToTheFile) {
   ScratchDir dir;
-  writeFile(dir / "main.sc", kMain);
-  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
-  const Scene scene = loadScene(dir / "main.sc");
+  const Scene scene = writeMainScene(dir);
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
   CameraSpec moved = scene.camera;
   moved.eye = Vec3(4, 4, 4);

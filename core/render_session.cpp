@@ -5,6 +5,7 @@
 #include "core/tracer.h"
 
 #include <condition_variable>
+#include <optional>
 
 namespace prism {
 
@@ -171,48 +172,59 @@ void RenderSession::run(Work& work, bool keepPass1) {
     apply();
     version_.fetch_add(1, std::memory_order_release);
   };
+  // Every tile on the worker threads: sample(x, y, counts) for each pixel
+  // (nothing where the pass has nothing to do), then the tile's samples and
+  // counts handed to store() at once under the lock, so a cancelled tile is
+  // dropped whole, never half-published.
+  auto sampleTiles = [&](auto&& sample, auto&& store) {
+    parallelFor(
+        int(tiles.size()), threads,
+        [&](int item, int) {
+          lowerCurrentThreadPriority();
+          const Tile& tile = tiles[std::size_t(item)];
+          RayCounts counts;
+          std::vector<Sample> samples;
+          for (int y = tile.y0; y < tile.y1; ++y) {
+            if (cancelled()) return;
+            for (int x = tile.x0; x < tile.x1; ++x)
+              if (const std::optional<Rgb> c = sample(x, y, counts))
+                samples.push_back({work.film.index(x, y), *c});
+          }
+          publish([&] { store(samples, counts); });
+        },
+        cancelled);
+  };
 
   if (!keepPass1) {
     for (int level = kCoarsestLevel; level >= 1; level /= 2) {
       publish([&] { work.level = level; });
-      parallelFor(
-          int(tiles.size()), threads,
-          [&](int item, int) {
-            lowerCurrentThreadPriority();
-            const Tile& tile = tiles[std::size_t(item)];
-            RayCounts counts;
-            std::vector<Sample> samples;
-            for (int y = tile.y0; y < tile.y1; ++y) {
-              if (cancelled()) return; // the tile is dropped, never half-published
-              for (int x = tile.x0; x < tile.x1; ++x) {
-                if (!isNewAtLevel(x, y, level)) continue;
-                ++counts.eyePrimary;
-                const Color c = tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts);
-                samples.push_back({work.film.index(x, y), Rgb(float(c.r), float(c.g), float(c.b))});
-              }
-            }
-            publish([&] {
-              for (const Sample& sample : samples) {
-                work.film.centre[sample.index] = sample.radiance;
-                work.film.radiance[sample.index] = sample.radiance;
-                work.sumMax +=
-                    double(std::max({sample.radiance.r, sample.radiance.g, sample.radiance.b}));
-                const int x = int(sample.index % std::size_t(s.width));
-                const int y = int(sample.index / std::size_t(s.width));
-                for (int by = y; by < std::min(y + level, s.height); ++by) {
-                  for (int bx = x; bx < std::min(x + level, s.width); ++bx) {
-                    const std::size_t j = work.film.index(bx, by);
-                    if (work.displayLevel[j] <= level) continue; // a finer sample is shown
-                    work.display[j] = sample.radiance;
-                    work.displayLevel[j] = std::uint8_t(level);
-                  }
+      sampleTiles(
+          [&](int x, int y, RayCounts& counts) -> std::optional<Rgb> {
+            if (!isNewAtLevel(x, y, level)) return std::nullopt;
+            ++counts.eyePrimary;
+            const Color c = tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts);
+            return Rgb(float(c.r), float(c.g), float(c.b));
+          },
+          [&](const std::vector<Sample>& samples, const RayCounts& counts) {
+            for (const Sample& sample : samples) {
+              work.film.centre[sample.index] = sample.radiance;
+              work.film.radiance[sample.index] = sample.radiance;
+              work.sumMax +=
+                  double(std::max({sample.radiance.r, sample.radiance.g, sample.radiance.b}));
+              const int x = int(sample.index % std::size_t(s.width));
+              const int y = int(sample.index / std::size_t(s.width));
+              for (int by = y; by < std::min(y + level, s.height); ++by) {
+                for (int bx = x; bx < std::min(x + level, s.width); ++bx) {
+                  const std::size_t j = work.film.index(bx, by);
+                  if (work.displayLevel[j] <= level) continue; // a finer sample is shown
+                  work.display[j] = sample.radiance;
+                  work.displayLevel[j] = std::uint8_t(level);
                 }
               }
-              work.pass1Pixels += (long long)samples.size();
-              work.counts += counts;
-            });
-          },
-          cancelled);
+            }
+            work.pass1Pixels += (long long)samples.size();
+            work.counts += counts;
+          });
       if (cancelled()) return;
     }
   }
@@ -225,33 +237,21 @@ void RenderSession::run(Work& work, bool keepPass1) {
     work.pass1Counts = work.counts;
   });
 
-  parallelFor(
-      int(tiles.size()), threads,
-      [&](int item, int) {
-        lowerCurrentThreadPriority();
-        const Tile& tile = tiles[std::size_t(item)];
-        RayCounts counts;
-        std::vector<Sample> samples;
-        for (int y = tile.y0; y < tile.y1; ++y) {
-          if (cancelled()) return;
-          for (int x = tile.x0; x < tile.x1; ++x) {
-            if (!needsSupersampling(work.film, x, y, avgmax, s.thresh)) continue;
-            samples.push_back(
-                {work.film.index(x, y), supersamplePixel(tracer, camera, x, y, s.jitter, counts)});
-          }
-        }
-        publish([&] {
-          for (const Sample& sample : samples) {
-            work.film.radiance[sample.index] = sample.radiance;
-            work.film.supersampled[sample.index] = 1;
-            work.display[sample.index] = sample.radiance;
-          }
-          work.supersampled += (long long)samples.size();
-          work.counts += counts;
-          ++work.pass2TilesDone;
-        });
+  sampleTiles(
+      [&](int x, int y, RayCounts& counts) -> std::optional<Rgb> {
+        if (!needsSupersampling(work.film, x, y, avgmax, s.thresh)) return std::nullopt;
+        return supersamplePixel(tracer, camera, x, y, s.jitter, counts);
       },
-      cancelled);
+      [&](const std::vector<Sample>& samples, const RayCounts& counts) {
+        for (const Sample& sample : samples) {
+          work.film.radiance[sample.index] = sample.radiance;
+          work.film.supersampled[sample.index] = 1;
+          work.display[sample.index] = sample.radiance;
+        }
+        work.supersampled += (long long)samples.size();
+        work.counts += counts;
+        ++work.pass2TilesDone;
+      });
   if (cancelled()) return;
 
   publish([&] {

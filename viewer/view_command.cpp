@@ -72,10 +72,8 @@ int runViewCommand(const ViewCommandOptions& o) {
     if (!o.script.empty()) app.script = loadScript(o.script);
     std::vector<Diagnostic> loadWarnings;
     Scene scene = loadAnyScene(o.render.scene, &loadWarnings);
-    for (const Diagnostic& d : loadWarnings) {
-      app.warnings.push_back(formatWarning(d));
-      std::cerr << app.warnings.back() << "\n";
-    }
+    for (const Diagnostic& d : loadWarnings)
+      app.warnings.push_back(formatWarning(d)); // printed by the window, or by the fallback
     ViewOptions& v = app.view;
     v.scenePath = o.render.scene;
     v.sizeFromScene = o.render.size.empty();

@@ -17,6 +17,8 @@ constexpr auto kPollInterval = std::chrono::milliseconds(500);
 ViewController::ViewController(Scene scene, const ViewOptions& options,
                                std::vector<std::string> warnings)
     : options_(options), fileCamera_(scene.camera), sceneWarnings_(std::move(warnings)) {
+  for (const std::string& line : sceneWarnings_)
+    std::cerr << line << "\n"; // also for whoever runs it from a terminal
   watch_.watch(scene.files);
   session_ = std::make_unique<RenderSession>(std::move(scene), options.settings, options.accel);
 }

@@ -4,65 +4,38 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
+#include "test_files.h"
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CommandResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using prism::test::quoted;
+using prism::test::runCaptured;
+using prism::test::RunResult;
+using prism::test::ScratchDir;
+using prism::test::slurp;
+using prism::test::writeFile;
 
 class Cli : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("prism_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CommandResult prism(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + PRISM_BINARY + "' " + args + " >'" +
-                                out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    CommandResult run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = slurp(out);
-    run.err = slurp(err);
-    return run;
+  RunResult prism(const std::string& args) {
+    return runCaptured(quoted(PRISM_BINARY) + " " + args, dir_);
   }
 
   fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
+    writeFile(dir_ / name, text);
+    return dir_ / name;
   }
 
   std::string scene(const std::string& name) {
     return std::string(PRISM_SOURCE_DIR) + "/scenes/" + name;
   }
 
-  fs::path dir_;
+  ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 const char* kSmallScene = R"(eye 0 0 4
@@ -73,13 +46,13 @@ sphere 0 0 0 1
 )";
 
 TEST_F(Cli, HelpAndVersionSucceed) {
-  const CommandResult help = prism("--help");
+  const RunResult help = prism("--help");
   EXPECT_EQ(help.exitCode, 0);
   EXPECT_NE(help.out.find("render"), std::string::npos);
-  const CommandResult renderHelp = prism("render --help");
+  const RunResult renderHelp = prism("render --help");
   EXPECT_EQ(renderHelp.exitCode, 0);
   EXPECT_NE(renderHelp.out.find("--thresh"), std::string::npos);
-  const CommandResult version = prism("--version");
+  const RunResult version = prism("--version");
   EXPECT_EQ(version.exitCode, 0);
   EXPECT_NE(version.out.find("prism "), std::string::npos);
 }
@@ -102,7 +75,7 @@ TEST_F(Cli, UsageErrorsExitWith2) {
 TEST_F(Cli, SceneErrorsAreLocatedAndLeaveNoOutput) {
   const fs::path bad = write("bad.sc", "eye 0 0 4\nsphere 0 0 0 -1\nlight 1 2\n");
   const fs::path out = dir_ / "bad.tiff";
-  const CommandResult run = prism("render " + bad.string() + " -o " + out.string());
+  const RunResult run = prism("render " + bad.string() + " -o " + out.string());
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.err.find(bad.string() + ":2:14: error:"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find(bad.string() + ":3:"), std::string::npos) << run.err;
@@ -114,10 +87,10 @@ TEST_F(Cli, SceneErrorsAreLocatedAndLeaveNoOutput) {
 
 TEST_F(Cli, UnwritableOutputExitsWith1BeforeRendering) {
   const std::string s = write("s.sc", kSmallScene).string();
-  const CommandResult run = prism("render " + s + " -o " + (dir_ / "no/such/dir/x.tiff").string());
+  const RunResult run = prism("render " + s + " -o " + (dir_ / "no/such/dir/x.tiff").string());
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("no such directory"), std::string::npos) << run.err;
-  const CommandResult format = prism("render " + s + " -o " + (dir_ / "x.unknownformat").string());
+  const RunResult format = prism("render " + s + " -o " + (dir_ / "x.unknownformat").string());
   EXPECT_EQ(format.exitCode, 1);
   EXPECT_FALSE(fs::exists(dir_ / "x.unknownformat"));
 }
@@ -125,7 +98,7 @@ TEST_F(Cli, UnwritableOutputExitsWith1BeforeRendering) {
 TEST_F(Cli, WritesAn8BitRgbTiffAndJsonStatistics) {
   const std::string s = write("s.sc", kSmallScene).string();
   const fs::path out = dir_ / "o.tiff", json = dir_ / "stats.json";
-  const CommandResult run =
+  const RunResult run =
       prism("render " + s + " -o " + out.string() + " --size 40 30 --depth 3 --thresh 0.2 " +
             "--stats-json " + json.string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -196,7 +169,7 @@ TEST_F(Cli, FloatFlagWritesRadianceTiff) {
 
 TEST_F(Cli, PixelPrintsTheRayTree) {
   const std::string s = write("s.sc", kSmallScene).string();
-  const CommandResult run = prism("render " + s + " --size 21 21 --pixel 10 10");
+  const RunResult run = prism("render " + s + " --size 21 21 --pixel 10 10");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.out.find("eye ray, depth 1"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("hits sphere #0 (s.sc:5)"), std::string::npos) << run.out;
@@ -208,7 +181,7 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
 TEST_F(Cli, RendersEveryShippedScene) {
   for (const char* name : {"table.sc", "glass.sc", "chex.sc", "tree.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
-    const CommandResult run =
+    const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");
     EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
     EXPECT_TRUE(fs::exists(out)) << name;
@@ -218,8 +191,8 @@ TEST_F(Cli, RendersEveryShippedScene) {
 TEST_F(Cli, BenchPrintsItsTablesAndScalingData) {
   const std::string s = write("s.sc", kSmallScene).string();
   const fs::path data = dir_ / "scaling.dat";
-  const CommandResult run = prism("bench " + s + " --size 16 --accel bvh,none --budget 0.05 " +
-                                  "--scaling-max 1000 --data " + data.string());
+  const RunResult run = prism("bench " + s + " --size 16 --accel bvh,none --budget 0.05 " +
+                              "--scaling-max 1000 --data " + data.string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.out.find("| s.sc | 1 | bvh |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| s.sc | 1 | none |"), std::string::npos) << run.out;

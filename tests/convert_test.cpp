@@ -8,15 +8,12 @@
 #include "core/scene_parser.h"
 #include "core/scene_writer.h"
 
+#include "test_pictures.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <sstream>
 
@@ -152,47 +149,26 @@ TEST(Convert, DecomposeRebuildsTheMap) {
 // The command line.
 class ConvertCli : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("prism_convert_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
+  // The exit code of `prism ARGS`, and what it wrote to stderr.
   int prism(const std::string& args, std::string* err = nullptr) {
-    const fs::path errPath = dir_ / "stderr.txt";
-    const std::string command =
-        std::string("'") + PRISM_BINARY + "' " + args + " >/dev/null 2>'" + errPath.string() + "'";
-    const int status = std::system(command.c_str());
-    if (err != nullptr) {
-      std::ifstream in(errPath);
-      std::stringstream s;
-      s << in.rdbuf();
-      *err = s.str();
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const test::RunResult run = test::runCaptured(test::quoted(PRISM_BINARY) + " " + args, dir_);
+    if (err != nullptr) *err = run.err;
+    return run.exitCode;
   }
 
   fs::path write(const std::string& name, const std::string& contents) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << contents;
-    return p;
+    test::writeFile(dir_ / name, contents);
+    return dir_ / name;
   }
 
   std::vector<unsigned char> pixels(const fs::path& path) {
-    auto in = OIIO::ImageInput::open(path.string());
-    EXPECT_TRUE(in);
-    if (!in) return {};
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<unsigned char> data(std::size_t(spec.width) * spec.height * spec.nchannels);
-    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, data.data());
-    return data;
+    const std::optional<test::Picture> picture = test::readPicture(path);
+    EXPECT_TRUE(picture) << path;
+    return picture ? picture->pixels : std::vector<unsigned char>{};
   }
 
-  fs::path dir_;
+  test::ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 constexpr const char* kNff = "v from 0 1 6 at 0 0 0 up 0 1 0 angle 40 resolution 48 36\n"

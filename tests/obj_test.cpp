@@ -6,12 +6,11 @@
 #include "core/obj_reader.h"
 #include "core/tracer.h"
 
+#include "test_files.h"
+
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
 
 namespace prism {
 namespace {
@@ -20,20 +19,9 @@ namespace fs = std::filesystem;
 
 class Obj : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("prism_obj_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
+    test::writeFile(dir_ / name, text);
+    return dir_ / name;
   }
 
   // The messages of loading `obj` (and `mtl` as t.mtl), the temporary
@@ -52,7 +40,8 @@ protected:
     return "no error";
   }
 
-  fs::path dir_;
+  test::ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 constexpr const char* kMtl = R"(# materials

@@ -4,13 +4,13 @@
 #include "core/geometry.h"
 #include "core/scene_parser.h"
 
+#include "test_files.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <random>
-#include <unistd.h>
 
 namespace prism {
 namespace {
@@ -50,20 +50,9 @@ void expectVec(const Vec3& actual, const Vec3& expected, double tol = kTol) {
 // A directory of scene files unique to the running test, removed afterwards.
 class ParserFiles : public ::testing::Test {
 protected:
-  void SetUp() override {
-    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    dir_ = fs::temp_directory_path() /
-           ("prism_parser_test_" + test + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& relative, const std::string& text) {
-    const fs::path path = dir_ / relative;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
+    test::writeFile(dir_ / relative, text);
+    return dir_ / relative;
   }
   std::string name(const std::string& relative) const { return (dir_ / relative).string(); }
 
@@ -76,7 +65,8 @@ protected:
     return "";
   }
 
-  fs::path dir_;
+  test::ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 // ---------------------------------------------------------------------------

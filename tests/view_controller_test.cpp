@@ -8,7 +8,7 @@
 #include "core/scene_loader.h"
 #include "core/scene_parser.h"
 
-#include "view_test_util.h"
+#include "test_pictures.h"
 
 #include <thread>
 

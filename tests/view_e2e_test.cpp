@@ -2,7 +2,7 @@
 // (xvfb-run, so it runs the same with or without a display, and under CI), where
 // Mesa's llvmpipe provides OpenGL, and drives `prism view --script`. Scripts
 // synchronise on events (wait pass1, wait done, echo), never on sleeps.
-#include "view_test_util.h"
+#include "test_pictures.h"
 
 #include <cstdio>
 

@@ -1,7 +1,7 @@
 // `prism view` without a display: one line says so, then the same render
 // `prism render` would make is written (to -o, or SCENE-STEM.tiff here), exit 0.
 // Also `prism SCENE` with no command, which means `prism view SCENE`.
-#include "view_test_util.h"
+#include "test_pictures.h"
 
 namespace prism::test {
 namespace {

@@ -1,76 +1,17 @@
-// Helpers shared by the tests that run `prism view` as a program: a scratch
-// directory per test, running shell commands, and reading pictures with OIIO.
+// Pictures written by the program under test, read back with OIIO and
+// compared pixel for pixel.
 #pragma once
 
-#include <OpenImageIO/imageio.h>
-#include <gtest/gtest.h>
+#include "test_files.h"
 
-#include <sys/wait.h>
-#include <unistd.h>
+#include <OpenImageIO/imageio.h>
 
 #include <cstdint>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
-#include <string>
+#include <utility>
 #include <vector>
 
 namespace prism::test {
-
-namespace fs = std::filesystem;
-
-inline std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-inline void writeFile(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
-
-// A fresh directory named after the running test, removed afterwards.
-class ScratchDir {
-public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("prism_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-  fs::path path_;
-};
-
-inline std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
-struct RunResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-// Runs a shell command in `dir`, capturing its stdout and stderr.
-inline RunResult run(const fs::path& dir, const std::string& command) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string line =
-      "cd " + quoted(dir) + " && " + command + " >" + quoted(out) + " 2>" + quoted(err);
-  const int status = std::system(line.c_str());
-  RunResult r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
 
 struct Picture {
   int width = 0;

@@ -3,6 +3,8 @@
 // light markers sit where the lights are drawn).
 #include "viewer/camera_controls.h"
 
+#include "tests/test_expect.h"
+
 #include <gtest/gtest.h>
 
 namespace prism {
@@ -15,12 +17,6 @@ CameraSpec tilted() {
   c.up = Vec3(0.0, 1.0, 0.0);
   c.fov = 50.0;
   return c;
-}
-
-void expectNear(const Vec3& a, const Vec3& b, double tolerance = 1e-9) {
-  EXPECT_NEAR(a.x, b.x, tolerance);
-  EXPECT_NEAR(a.y, b.y, tolerance);
-  EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
 TEST(CameraControls, OrbitKeepsDistanceAndLookat) {
@@ -42,8 +38,8 @@ TEST(CameraControls, YawTurnsAboutUpAndFullCircleReturns) {
   const CameraSpec o = orbit(c, 37.0, 0.0);
   // Height above lookat along up is unchanged by yaw.
   EXPECT_NEAR(o.eye.y, c.eye.y, 1e-9);
-  expectNear(orbit(c, 360.0, 0.0).eye, c.eye);
-  expectNear(orbit(orbit(c, 25.0, 0.0), -25.0, 0.0).eye, c.eye);
+  test::expectVecNear(orbit(c, 360.0, 0.0).eye, c.eye, 1e-9);
+  test::expectVecNear(orbit(orbit(c, 25.0, 0.0), -25.0, 0.0).eye, c.eye, 1e-9);
   // From +z, a positive yaw (right-handed about +y) takes the eye toward +x.
   CameraSpec front;
   EXPECT_GT(orbit(front, 30.0, 0.0).eye.x, 0.0);
@@ -68,7 +64,7 @@ TEST(CameraControls, PanMovesEyeAndLookatTogetherAndFollowsTheMouse) {
   const CameraSpec c = tilted();
   const int w = 320, h = 200;
   const CameraSpec p = pan(c, 40.0, -25.0, h);
-  expectNear(p.eye - c.eye, p.lookat - c.lookat);
+  test::expectVecNear(p.eye - c.eye, p.lookat - c.lookat, 1e-9);
   // A point at the old lookat moves on screen by the mouse's motion.
   const auto before = projectToScreen(c, w, h, c.lookat);
   const auto after = projectToScreen(p, w, h, c.lookat);
@@ -82,8 +78,8 @@ TEST(CameraControls, ZoomScalesTheDistanceAndNeverReachesLookat) {
   const double distance = glm::length(c.eye - c.lookat);
   const CameraSpec in = zoom(c, 0.5);
   EXPECT_NEAR(glm::length(in.eye - in.lookat), 0.5 * distance, 1e-12);
-  expectNear(glm::normalize(in.eye - in.lookat), glm::normalize(c.eye - c.lookat));
-  expectNear(zoom(in, 2.0).eye, c.eye);
+  test::expectVecNear(glm::normalize(in.eye - in.lookat), glm::normalize(c.eye - c.lookat), 1e-9);
+  test::expectVecNear(zoom(in, 2.0).eye, c.eye, 1e-9);
   for (double factor : {0.0, -3.0, 1e-300}) {
     const CameraSpec z = zoom(c, factor);
     EXPECT_GT(glm::length(z.eye - z.lookat), 0.0) << factor;

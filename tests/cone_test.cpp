@@ -6,6 +6,7 @@
 #include "core/cone.h"
 #include "core/scene_parser.h"
 #include "core/tracer.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -165,21 +166,15 @@ TEST(Cone, ScLanguageWithTransforms) {
 }
 
 TEST(Cone, ScLanguageErrors) {
-  const auto message = [](const std::string& text) {
-    try {
-      parseScene(text, "t.sc");
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_EQ(message("cone 0 0 0 -1 0 0 1 1"), "t.sc:1:12: error: cone: negative radius '-1'");
-  EXPECT_EQ(message("cone 0 0 0 0 0 0 1 0"), "t.sc:1:1: error: cone: both radii are zero");
-  EXPECT_EQ(message("cone 1 2 3 1 1 2 3 2"),
+  EXPECT_EQ(test::sceneErrorsOf("cone 0 0 0 -1 0 0 1 1"),
+            "t.sc:1:12: error: cone: negative radius '-1'");
+  EXPECT_EQ(test::sceneErrorsOf("cone 0 0 0 0 0 0 1 0"),
+            "t.sc:1:1: error: cone: both radii are zero");
+  EXPECT_EQ(test::sceneErrorsOf("cone 1 2 3 1 1 2 3 2"),
             "t.sc:1:1: error: cone: base and apex are the same point");
-  EXPECT_EQ(message("cone 0 0 0 1 0 0 1"),
+  EXPECT_EQ(test::sceneErrorsOf("cone 0 0 0 1 0 0 1"),
             "t.sc:1:1: error: cone: expected AR but reached the end of the file");
-  EXPECT_EQ(message("cone 0 0 0 1 0 nan 1 1"),
+  EXPECT_EQ(test::sceneErrorsOf("cone 0 0 0 1 0 nan 1 1"),
             "t.sc:1:16: error: cone: AY is not a finite number ('nan')");
 }
 

@@ -7,6 +7,7 @@
 #include "core/group_bvh.h"
 #include "core/transform.h"
 #include "tests/scene_builder.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,7 @@ using test::addGroup;
 using test::addMaterial;
 using test::addPolygon;
 using test::addSphere;
+using test::expectVecNear;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -35,12 +37,6 @@ Ray makeRay(const Vec3& origin, const Vec3& dir) { return {origin, glm::normaliz
 // Angle between two vectors, accurate also for tiny angles.
 double angleBetween(const Vec3& a, const Vec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
-
-void expectVecNear(const Vec3& got, const Vec3& want, double tol) {
-  EXPECT_NEAR(got.x, want.x, tol);
-  EXPECT_NEAR(got.y, want.y, tol);
-  EXPECT_NEAR(got.z, want.z, tol);
 }
 
 // ---------------------------------------------------------------------------

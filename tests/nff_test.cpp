@@ -4,6 +4,7 @@
 #include "core/accel.h"
 #include "core/nff_reader.h"
 #include "core/tracer.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -40,24 +41,20 @@ pp 4
 -2 2 -2  1 0 1
 )";
 
-void expectNear(const Vec3& a, const Vec3& b, double tolerance = 1e-12) {
-  EXPECT_NEAR(glm::length(a - b), 0.0, tolerance)
-      << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z
-      << ")";
-}
+using test::expectCloseTo;
 
 TEST(Nff, ViewBecomesTheCamera) {
   const Scene s = parseNff(kScene, "t.nff");
-  expectNear(s.camera.eye, {0, 0, 10});
-  expectNear(s.camera.lookat, {0, 0, 0});
-  expectNear(s.camera.up, {0, 1, 0});
+  expectCloseTo(s.camera.eye, {0, 0, 10});
+  expectCloseTo(s.camera.lookat, {0, 0, 0});
+  expectCloseTo(s.camera.up, {0, 1, 0});
   EXPECT_EQ(s.width, 64);
   EXPECT_EQ(s.height, 48);
   // NFF's angle spans the centres of the top and bottom rows (47 pixels);
   // Prism's fov spans the edges (48 pixels).
   const double expected = 2.0 * std::atan(std::tan(glm::radians(15.0)) * 48.0 / 47.0);
   EXPECT_NEAR(s.camera.fov, glm::degrees(expected), 1e-12);
-  expectNear(s.background, {0.2, 0.3, 0.4});
+  expectCloseTo(s.background, {0.2, 0.3, 0.4});
   EXPECT_EQ(s.ambient, Color(0.0));
 }
 
@@ -66,10 +63,10 @@ TEST(Nff, LightsDeliverTheirIntensityAtTheViewedPoint) {
   ASSERT_EQ(s.lights.size(), 2u);
   // Both lights are 5 units from `at`: intensity x 25, so that 1/r^2 gives
   // back the NFF intensity there.
-  expectNear(s.lights[0].position, {0, 0, 5});
-  expectNear(s.lights[0].intensity, Color(25.0));
-  expectNear(s.lights[1].position, {3, 4, 0});
-  expectNear(s.lights[1].intensity, Color(12.5, 6.25, 25.0));
+  expectCloseTo(s.lights[0].position, {0, 0, 5});
+  expectCloseTo(s.lights[0].intensity, Color(25.0));
+  expectCloseTo(s.lights[1].position, {3, 4, 0});
+  expectCloseTo(s.lights[1].intensity, Color(12.5, 6.25, 25.0));
 }
 
 TEST(Nff, FillBecomesTheMaterial) {
@@ -91,15 +88,15 @@ TEST(Nff, FillBecomesTheMaterial) {
 TEST(Nff, Primitives) {
   const Scene s = parseNff(kScene, "t.nff");
   ASSERT_EQ(s.spheres.size(), 1u);
-  expectNear(s.spheres[0].center, {0, 0, 0});
+  expectCloseTo(s.spheres[0].center, {0, 0, 0});
   EXPECT_EQ(s.spheres[0].radius, 1.0);
   EXPECT_EQ(s.spheres[0].origin.line, 13u);
 
   ASSERT_EQ(s.cones.size(), 1u);
   const Cone& c = s.cones[0];
   EXPECT_TRUE(isCircular(c));
-  expectNear(c.objectToWorldOffset, {0, -2, 0});
-  expectNear(c.objectToWorldOffset + c.objectToWorld[2], {0, 2, 0});
+  expectCloseTo(c.objectToWorldOffset, {0, -2, 0});
+  expectCloseTo(c.objectToWorldOffset + c.objectToWorld[2], {0, 2, 0});
   EXPECT_NEAR(c.baseRadius * glm::length(c.objectToWorld[0]), 1.0, 1e-15);
   EXPECT_NEAR(c.apexRadius * glm::length(c.objectToWorld[0]), 0.5, 1e-15);
   EXPECT_EQ(c.origin.line, 14u);
@@ -107,8 +104,8 @@ TEST(Nff, Primitives) {
   ASSERT_EQ(s.polygons.size(), 1u);
   const Polygon& p = s.polygons[0];
   ASSERT_EQ(p.vertexCount, 3u);
-  expectNear(s.polygonVertices[p.firstVertex + 2], {0, 1, -1});
-  expectNear(p.normal, {0, 0, 1}); // counterclockwise seen from +z
+  expectCloseTo(s.polygonVertices[p.firstVertex + 2], {0, 1, -1});
+  expectCloseTo(p.normal, {0, 0, 1}); // counterclockwise seen from +z
   EXPECT_EQ(p.origin.line, 16u);
 
   // The convex patch of 4 becomes a fan of 2 smooth triangles; its normals
@@ -117,11 +114,11 @@ TEST(Nff, Primitives) {
   for (const Triangle& t : s.triangles) {
     EXPECT_TRUE(t.smooth());
     EXPECT_EQ(t.origin.line, 20u);
-    expectNear(geometricNormal(t, s.meshVertices.data()), {0, 0, 1});
+    expectCloseTo(geometricNormal(t, s.meshVertices.data()), {0, 0, 1});
   }
-  expectNear(s.meshVertices[s.triangles[1].vertex[2]], {-2, 2, -2});
-  expectNear(s.meshNormals[s.triangles[0].normal[1]], {0, 0, 1});
-  expectNear(s.meshNormals[s.triangles[1].normal[2]], glm::normalize(Vec3(1, 0, 1)));
+  expectCloseTo(s.meshVertices[s.triangles[1].vertex[2]], {-2, 2, -2});
+  expectCloseTo(s.meshNormals[s.triangles[0].normal[1]], {0, 0, 1});
+  expectCloseTo(s.meshNormals[s.triangles[1].normal[2]], glm::normalize(Vec3(1, 0, 1)));
   EXPECT_EQ(s.primitiveCount(), 5u);
 }
 
@@ -147,7 +144,7 @@ TEST(Nff, CommentsOptionalLightColourAndInsideOutCones) {
                            "l 0 0 10  # a white light\n"
                            "c 0 0 0 -1  0 1 0 -0.5  # seen from inside: both radii negative\n",
                            "t.nff");
-  expectNear(s.lights[0].intensity, Color(100.0));
+  expectCloseTo(s.lights[0].intensity, Color(100.0));
   ASSERT_EQ(s.cones.size(), 1u);
   EXPECT_NEAR(s.cones[0].baseRadius, 1.0, 1e-15);
   EXPECT_NEAR(s.cones[0].apexRadius, 0.5, 1e-15);

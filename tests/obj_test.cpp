@@ -7,6 +7,7 @@
 #include "core/tracer.h"
 
 #include "test_files.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -97,9 +98,7 @@ usemtl tr
 f 1 2 4
 )";
 
-void expectNear(const Vec3& a, const Vec3& b, double tolerance = 1e-12) {
-  EXPECT_NEAR(glm::length(a - b), 0.0, tolerance);
-}
+using test::expectCloseTo;
 
 TEST_F(Obj, FacesBecomeTriangles) {
   write("t.mtl", kMtl);
@@ -110,19 +109,19 @@ TEST_F(Obj, FacesBecomeTriangles) {
   const Vec3* v = s.meshVertices.data();
   // f 1//1 2//1 3//1: smooth, its normal given.
   EXPECT_TRUE(s.triangles[0].smooth());
-  expectNear(s.meshNormals[s.triangles[0].normal[0]], {0, 0, 1});
+  expectCloseTo(s.meshNormals[s.triangles[0].normal[0]], {0, 0, 1});
   EXPECT_EQ(s.triangles[0].origin.line, 11u);
   // f -4 -2 -1 counts back from the 4 vertices so far: 1 3 4; flat.
   EXPECT_FALSE(s.triangles[1].smooth());
-  expectNear(v[s.triangles[1].vertex[0]], {0, 0, 0});
-  expectNear(v[s.triangles[1].vertex[1]], {1, 1, 0});
-  expectNear(v[s.triangles[1].vertex[2]], {0, 1, 0});
+  expectCloseTo(v[s.triangles[1].vertex[0]], {0, 0, 0});
+  expectCloseTo(v[s.triangles[1].vertex[1]], {1, 1, 0});
+  expectCloseTo(v[s.triangles[1].vertex[2]], {0, 1, 0});
   EXPECT_EQ(s.triangles[1].origin.line, 12u);
   // The quad: two smooth triangles, normals normalised.
   for (int i : {2, 3}) {
     EXPECT_TRUE(s.triangles[i].smooth());
     EXPECT_EQ(s.triangles[i].origin.line, 20u);
-    expectNear(s.meshNormals[s.triangles[i].normal[2]], {0, 0, 1});
+    expectCloseTo(s.meshNormals[s.triangles[i].normal[2]], {0, 0, 1});
   }
   // The concave pentagon: 3 triangles covering its area 2 - 0.5, all facing +z.
   double area = 0.0;
@@ -187,14 +186,14 @@ TEST_F(Obj, DefaultCameraAndLights) {
   const Scene s = loadObj(write("t.obj", "v -1 -2 -3\nv 3 2 -3\nv 3 2 1\nf 1 2 3\n"));
   ASSERT_EQ(s.triangles.size(), 1u);
   // Looks at the box's centre along -z, from far enough to see it whole.
-  expectNear(s.camera.lookat, {1, 0, -1});
+  expectCloseTo(s.camera.lookat, {1, 0, -1});
   const double radius = 0.5 * std::sqrt(16.0 + 16.0 + 16.0);
-  expectNear(s.camera.eye, {1, 0, -1 + 1.1 * radius / std::sin(glm::radians(22.5))}, 1e-9);
+  expectCloseTo(s.camera.eye, {1, 0, -1 + 1.1 * radius / std::sin(glm::radians(22.5))}, 1e-9);
   ASSERT_EQ(s.lights.size(), 2u);
   // Ten radii away, compensated to deliver 1 (key) and 0.35 (fill) there.
   const double d = 10.0 * radius;
-  expectNear(s.lights[0].intensity, Color(d * d), 1e-6);
-  expectNear(s.lights[1].intensity, Color(0.35 * d * d), 1e-6);
+  expectCloseTo(s.lights[0].intensity, Color(d * d), 1e-6);
+  expectCloseTo(s.lights[1].intensity, Color(0.35 * d * d), 1e-6);
   EXPECT_NEAR(glm::length(s.lights[0].position - s.camera.lookat), d, 1e-9);
   EXPECT_EQ(s.ambient, Color(0.1));
   EXPECT_EQ(s.background, Color(0.4));
@@ -225,7 +224,7 @@ TEST_F(Obj, NormalsAgainstTheWindingWin) {
   const Scene s = loadObj(write("t.obj", "v 0 0 0\nv 0 1 0\nv 1 0 0\nvn 0 0 1\n"
                                          "f 1//1 2//1 3//1\n"));
   ASSERT_EQ(s.triangles.size(), 1u);
-  expectNear(geometricNormal(s.triangles[0], s.meshVertices.data()), {0, 0, 1});
+  expectCloseTo(geometricNormal(s.triangles[0], s.meshVertices.data()), {0, 0, 1});
 }
 
 TEST_F(Obj, ZeroNormalsMakeAFlatFaceAndZeroAreaFacesAreDropped) {

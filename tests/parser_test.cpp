@@ -5,6 +5,7 @@
 #include "core/scene_parser.h"
 
 #include "test_files.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -21,16 +22,7 @@ constexpr double kTol = 1e-12;
 
 Scene parse(std::string_view text) { return parseScene(text, "t.sc"); }
 
-// All diagnostics of a scene that must fail, formatted and joined by '\n'; "" when
-// it parsed.
-std::string errorsOf(std::string_view text, const std::string& name = "t.sc") {
-  try {
-    parseScene(text, name);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::sceneErrorsOf;
 
 std::vector<Diagnostic> diagnosticsOf(std::string_view text) {
   try {
@@ -42,9 +34,7 @@ std::vector<Diagnostic> diagnosticsOf(std::string_view text) {
 }
 
 void expectVec(const Vec3& actual, const Vec3& expected, double tol = kTol) {
-  EXPECT_NEAR(actual.x, expected.x, tol);
-  EXPECT_NEAR(actual.y, expected.y, tol);
-  EXPECT_NEAR(actual.z, expected.z, tol);
+  test::expectVecNear(actual, expected, tol);
 }
 
 // A directory of scene files unique to the running test, removed afterwards.
@@ -129,7 +119,7 @@ TEST(Parser, TokensThatAreNotNumbers) {
                            "e5", ".", "+", "-", "0x-1", "1..", "3O", "30deg"}) {
     SCOPED_TRACE(text);
     // 'fov' at column 1, the argument at column 5.
-    EXPECT_EQ(errorsOf(std::string("fov ") + text),
+    EXPECT_EQ(sceneErrorsOf(std::string("fov ") + text),
               std::string("t.sc:1:5: error: fov: expected DEGREES (a number) but found '") + text +
                   "'");
   }
@@ -139,27 +129,28 @@ TEST(Parser, NonFiniteNumbersAreErrors) {
   for (const char* text : {"inf", "-inf", "nan", "NAN", "-nan", "infinity", "1e999", "-1e400",
                            "1.8e308", "0x1p2000"}) {
     SCOPED_TRACE(text);
-    EXPECT_EQ(errorsOf(std::string("fov ") + text),
+    EXPECT_EQ(sceneErrorsOf(std::string("fov ") + text),
               std::string("t.sc:1:5: error: fov: DEGREES is not a finite number ('") + text + "')");
   }
 }
 
 TEST(Parser, ANonFiniteArgumentIsReportedOnce) {
   // Not also as a negative radius, a negative colour or a non-positive IR.
-  EXPECT_EQ(errorsOf("sphere 0 0 0 -inf"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 -inf"),
             "t.sc:1:14: error: sphere: RADIUS is not a finite number ('-inf')");
-  EXPECT_EQ(errorsOf("surface 1 1 -inf 1 0 0 1 nan"),
+  EXPECT_EQ(sceneErrorsOf("surface 1 1 -inf 1 0 0 1 nan"),
             "t.sc:1:13: error: surface: B is not a finite number ('-inf')\n"
             "t.sc:1:26: error: surface: IR is not a finite number ('nan')");
-  EXPECT_EQ(errorsOf("scale 1 nan 1"), "t.sc:1:9: error: scale: Y is not a finite number ('nan')");
+  EXPECT_EQ(sceneErrorsOf("scale 1 nan 1"),
+            "t.sc:1:9: error: scale: Y is not a finite number ('nan')");
 }
 
 TEST(Parser, NumbersTooSmallForADoubleBecomeZero) {
   // 1e-400 underflows to 0, so the radius is not positive; 4.9e-324 is the
   // smallest subnormal and still positive.
-  EXPECT_EQ(errorsOf("sphere 0 0 0 1e-400"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1e-400"),
             "t.sc:1:14: error: sphere: radius must be positive, found '1e-400'");
-  EXPECT_EQ(errorsOf("sphere 0 0 0 0x1p-2000"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 0x1p-2000"),
             "t.sc:1:14: error: sphere: radius must be positive, found '0x1p-2000'");
   EXPECT_GT(parse("sphere 0 0 0 4.9e-324").spheres.at(0).radius, 0.0);
 }
@@ -185,7 +176,7 @@ TEST(Parser, WindowsLineEndings) {
   const Scene s = parse("sphere 0 0 0 1\r\nsphere 1 1 1 2\r\n");
   ASSERT_EQ(s.spheres.size(), 2u);
   EXPECT_EQ(s.spheres[1].origin.line, 2u);
-  EXPECT_EQ(errorsOf("fov 30\r\nfoo\r\n"), "t.sc:2:1: error: unknown keyword 'foo'");
+  EXPECT_EQ(sceneErrorsOf("fov 30\r\nfoo\r\n"), "t.sc:2:1: error: unknown keyword 'foo'");
 }
 
 TEST(Parser, ByteOrderMarkIsIgnored) {
@@ -194,8 +185,8 @@ TEST(Parser, ByteOrderMarkIsIgnored) {
                 .camera.fov,
             30.0);
   // Columns count from after the mark, as editors show them.
-  EXPECT_EQ(errorsOf("\xEF\xBB\xBF"
-                     "fov -1"),
+  EXPECT_EQ(sceneErrorsOf("\xEF\xBB\xBF"
+                          "fov -1"),
             "t.sc:1:5: error: fov: DEGREES must be greater than 0 and less than 180, found '-1'");
 }
 
@@ -603,9 +594,9 @@ TEST(ParserErrors, FormatAndWhat) {
 }
 
 TEST(ParserErrors, UnknownKeyword) {
-  EXPECT_EQ(errorsOf("sphere 0 0 0 1\n  shpere 1 2 3 4\n"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1\n  shpere 1 2 3 4\n"),
             "t.sc:2:3: error: unknown keyword 'shpere'");
-  EXPECT_EQ(errorsOf("Sphere 0 0 0 1"),
+  EXPECT_EQ(sceneErrorsOf("Sphere 0 0 0 1"),
             "t.sc:1:1: error: unknown keyword 'Sphere' (keywords are lower case: 'sphere')");
   const auto d = diagnosticsOf("fov 30\n\tcamera 1 2 3\n");
   ASSERT_EQ(d.size(), 1u);
@@ -616,54 +607,55 @@ TEST(ParserErrors, UnknownKeyword) {
 }
 
 TEST(ParserErrors, UnprintableAndLongTokensAreShownSafely) {
-  EXPECT_EQ(errorsOf(std::string("\x01x\x7f", 3)),
+  EXPECT_EQ(sceneErrorsOf(std::string("\x01x\x7f", 3)),
             "t.sc:1:1: error: unknown keyword '\\x01x\\x7f'");
-  EXPECT_EQ(errorsOf(std::string(100, 'a')),
+  EXPECT_EQ(sceneErrorsOf(std::string(100, 'a')),
             "t.sc:1:1: error: unknown keyword '" + std::string(40, 'a') + "...'");
 }
 
 TEST(ParserErrors, TooManyNumbers) {
-  EXPECT_EQ(errorsOf("sphere 0 0 0 1 2 3\n"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1 2 3\n"),
             "t.sc:1:16: error: expected a command but found the number '2' (too many numbers for "
             "the command before it?)");
 }
 
 TEST(ParserErrors, MissingOrNonNumericArgument) {
   // 'light' begins the next command, so it is parsed (and is fine).
-  EXPECT_EQ(errorsOf("sphere 0 0 0 light 1 2 3 1 1 1"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 light 1 2 3 1 1 1"),
             "t.sc:1:14: error: sphere: expected RADIUS (a number) but found 'light'");
   // 'zero' is not a keyword: it is skipped with the numbers after it.
-  EXPECT_EQ(errorsOf("sphere 0 0 zero 1\nsphere 0 0 0 1"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 zero 1\nsphere 0 0 0 1"),
             "t.sc:1:12: error: sphere: expected Z (a number) but found 'zero'");
   // At the end of the file the command keyword is pointed at.
-  EXPECT_EQ(errorsOf("fov 30\n  sphere 0 0 0\n"),
+  EXPECT_EQ(sceneErrorsOf("fov 30\n  sphere 0 0 0\n"),
             "t.sc:2:3: error: sphere: expected RADIUS but reached the end of the file");
-  EXPECT_EQ(errorsOf("light 1 2 3 # no colour"),
+  EXPECT_EQ(sceneErrorsOf("light 1 2 3 # no colour"),
             "t.sc:1:1: error: light: expected R but reached the end of the file");
-  EXPECT_EQ(errorsOf("surface 1 1 1 1 0 0 1 eye 0 0 1"),
+  EXPECT_EQ(sceneErrorsOf("surface 1 1 1 1 0 0 1 eye 0 0 1"),
             "t.sc:1:23: error: surface: expected IR (a number) but found 'eye'");
-  EXPECT_EQ(errorsOf("rotate 0 0 1 ninety"),
+  EXPECT_EQ(sceneErrorsOf("rotate 0 0 1 ninety"),
             "t.sc:1:14: error: rotate: expected DEGREES (a number) but found 'ninety'");
-  EXPECT_EQ(errorsOf("translate 1 2"),
+  EXPECT_EQ(sceneErrorsOf("translate 1 2"),
             "t.sc:1:1: error: translate: expected Z but reached the end of the file");
-  EXPECT_EQ(errorsOf("scale x"), "t.sc:1:7: error: scale: expected X (a number) but found 'x'");
-  EXPECT_EQ(errorsOf("eye 1 2 up 0 0 1"),
+  EXPECT_EQ(sceneErrorsOf("scale x"),
+            "t.sc:1:7: error: scale: expected X (a number) but found 'x'");
+  EXPECT_EQ(sceneErrorsOf("eye 1 2 up 0 0 1"),
             "t.sc:1:9: error: eye: expected Z (a number) but found 'up'");
-  EXPECT_EQ(errorsOf("background 0 0"),
+  EXPECT_EQ(sceneErrorsOf("background 0 0"),
             "t.sc:1:1: error: background: expected B but reached the end of the file");
 }
 
 TEST(ParserErrors, NegativeAndZeroRadius) {
-  EXPECT_EQ(errorsOf("sphere 0 0 0 -2"), "t.sc:1:14: error: sphere: negative radius '-2'");
-  EXPECT_EQ(errorsOf("sphere 0 0 0 0"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 -2"), "t.sc:1:14: error: sphere: negative radius '-2'");
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 0"),
             "t.sc:1:14: error: sphere: radius must be positive, found '0'");
-  EXPECT_EQ(errorsOf("sphere 0 0 0 -0"),
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 -0"),
             "t.sc:1:14: error: sphere: radius must be positive, found '-0'");
 }
 
 TEST(ParserErrors, FieldOfView) {
   for (const char* text : {"0", "180", "-5", "200"}) {
-    EXPECT_EQ(errorsOf(std::string("fov ") + text),
+    EXPECT_EQ(sceneErrorsOf(std::string("fov ") + text),
               std::string("t.sc:1:5: error: fov: DEGREES must be greater than 0 and less than 180, "
                           "found '") +
                   text + "'");
@@ -675,36 +667,36 @@ TEST(ParserErrors, FieldOfView) {
 TEST(ParserErrors, ResolutionIsTwoIntegerLiterals) {
   EXPECT_EQ(parse("resolution +640 480").width, 640);
   EXPECT_EQ(parse("resolution 32768 1").width, 32768);
-  EXPECT_EQ(errorsOf("resolution 640.0 480"),
+  EXPECT_EQ(sceneErrorsOf("resolution 640.0 480"),
             "t.sc:1:12: error: resolution: W must be an integer from 1 to 32768, found '640.0'");
-  EXPECT_EQ(errorsOf("resolution 640 0"),
+  EXPECT_EQ(sceneErrorsOf("resolution 640 0"),
             "t.sc:1:16: error: resolution: H must be an integer from 1 to 32768, found '0'");
-  EXPECT_EQ(errorsOf("resolution 32769 -1"),
+  EXPECT_EQ(sceneErrorsOf("resolution 32769 -1"),
             "t.sc:1:12: error: resolution: W must be an integer from 1 to 32768, found '32769'\n"
             "t.sc:1:18: error: resolution: H must be an integer from 1 to 32768, found '-1'");
-  EXPECT_EQ(errorsOf("resolution 0x280 99999999999999999999999"),
+  EXPECT_EQ(sceneErrorsOf("resolution 0x280 99999999999999999999999"),
             "t.sc:1:12: error: resolution: W must be an integer from 1 to 32768, found '0x280'\n"
             "t.sc:1:18: error: resolution: H must be an integer from 1 to 32768, found "
             "'99999999999999999999999'");
-  EXPECT_EQ(errorsOf("resolution 640 tall"),
+  EXPECT_EQ(sceneErrorsOf("resolution 640 tall"),
             "t.sc:1:16: error: resolution: expected H (an integer) but found 'tall'");
 }
 
 TEST(ParserErrors, NegativeColoursAndCoefficients) {
-  EXPECT_EQ(errorsOf("background 0 -1 0"),
+  EXPECT_EQ(sceneErrorsOf("background 0 -1 0"),
             "t.sc:1:14: error: background: G must not be negative, found '-1'");
-  EXPECT_EQ(errorsOf("ambient -0.5 0 0"),
+  EXPECT_EQ(sceneErrorsOf("ambient -0.5 0 0"),
             "t.sc:1:9: error: ambient: R must not be negative, found '-0.5'");
-  EXPECT_EQ(errorsOf("light 0 0 0 1 1 -1e-9"),
+  EXPECT_EQ(sceneErrorsOf("light 0 0 0 1 1 -1e-9"),
             "t.sc:1:17: error: light: B must not be negative, found '-1e-9'");
   // Light positions may be negative.
   EXPECT_EQ(parse("light -1 -2 -3 1 1 1").lights.size(), 1u);
   // Columns: R 9, G 11, B 13, KDR 15, KSR 17, KST 19, E 21, IR 23.
-  EXPECT_EQ(errorsOf("surface 1 1 1 1 -.5 0 1 1"),
+  EXPECT_EQ(sceneErrorsOf("surface 1 1 1 1 -.5 0 1 1"),
             "t.sc:1:17: error: surface: KSR must not be negative, found '-.5'");
-  EXPECT_EQ(errorsOf("surface 1 1 1 1 0 0 -1 1"),
+  EXPECT_EQ(sceneErrorsOf("surface 1 1 1 1 0 0 -1 1"),
             "t.sc:1:21: error: surface: E must not be negative, found '-1'");
-  EXPECT_EQ(errorsOf("surface -1 1 1 -1 0 0 1 0"),
+  EXPECT_EQ(sceneErrorsOf("surface -1 1 1 -1 0 0 1 0"),
             "t.sc:1:9: error: surface: R must not be negative, found '-1'\n"
             "t.sc:1:16: error: surface: KDR must not be negative, found '-1'\n"
             "t.sc:1:25: error: surface: IR must be positive, found '0'");
@@ -713,49 +705,49 @@ TEST(ParserErrors, NegativeColoursAndCoefficients) {
 }
 
 TEST(ParserErrors, ScaleAndRotate) {
-  EXPECT_EQ(errorsOf("scale 1 0 1"), "t.sc:1:9: error: scale: Y must not be zero, found '0'");
-  EXPECT_EQ(errorsOf("rotate 0 0 0 45"),
+  EXPECT_EQ(sceneErrorsOf("scale 1 0 1"), "t.sc:1:9: error: scale: Y must not be zero, found '0'");
+  EXPECT_EQ(sceneErrorsOf("rotate 0 0 0 45"),
             "t.sc:1:8: error: rotate: the axis (AX AY AZ) must not be zero");
   // A transform that overflows is refused where it would happen.
-  EXPECT_EQ(errorsOf("scale 1e200 1e200 1e200\nscale 1e200 1 1\n"),
+  EXPECT_EQ(sceneErrorsOf("scale 1e200 1e200 1e200\nscale 1e200 1 1\n"),
             "t.sc:2:1: error: scale: the current transform would become degenerate (too large or "
             "too small)");
-  EXPECT_EQ(errorsOf("scale 1e-200 1 1\nscale 1e-200 1 1\n"),
+  EXPECT_EQ(sceneErrorsOf("scale 1e-200 1 1\nscale 1e-200 1 1\n"),
             "t.sc:2:1: error: scale: the current transform would become degenerate (too large or "
             "too small)");
-  EXPECT_EQ(errorsOf("scale 1e300 1 1\nlight 1e300 0 0 1 1 1\n"),
+  EXPECT_EQ(sceneErrorsOf("scale 1e300 1 1\nlight 1e300 0 0 1 1 1\n"),
             "t.sc:2:1: error: light: the position is not finite after the current transform");
-  EXPECT_EQ(errorsOf("scale 1e300 1e300 1e300\nsphere 0 0 0 1e300\n"),
+  EXPECT_EQ(sceneErrorsOf("scale 1e300 1e300 1e300\nsphere 0 0 0 1e300\n"),
             "t.sc:2:1: error: sphere: too large or too small after the current transform");
 }
 
 TEST(ParserErrors, PolygonVertexCount) {
-  EXPECT_EQ(errorsOf("polygon 2 0 0 0 1 0 0\nsphere 0 0 0 1"),
+  EXPECT_EQ(sceneErrorsOf("polygon 2 0 0 0 1 0 0\nsphere 0 0 0 1"),
             "t.sc:1:9: error: polygon: N must be an integer from 3 to 4294967295, found '2'");
-  EXPECT_EQ(errorsOf("polygon 3.0 0 0 0 1 0 0 0 1 0"),
+  EXPECT_EQ(sceneErrorsOf("polygon 3.0 0 0 0 1 0 0 0 1 0"),
             "t.sc:1:9: error: polygon: N must be an integer from 3 to 4294967295, found '3.0'");
-  EXPECT_EQ(errorsOf("polygon 4294967296 1 2 3"),
+  EXPECT_EQ(sceneErrorsOf("polygon 4294967296 1 2 3"),
             "t.sc:1:9: error: polygon: N must be an integer from 3 to 4294967295, found "
             "'4294967296'");
-  EXPECT_EQ(errorsOf("polygon three 0 0 0"),
+  EXPECT_EQ(sceneErrorsOf("polygon three 0 0 0"),
             "t.sc:1:9: error: polygon: expected N (an integer) but found 'three'");
-  EXPECT_EQ(errorsOf("polygon"),
+  EXPECT_EQ(sceneErrorsOf("polygon"),
             "t.sc:1:1: error: polygon: expected N but reached the end of the file");
 }
 
 TEST(ParserErrors, PolygonWrongNumberOfCoordinates) {
-  EXPECT_EQ(errorsOf("polygon 4 0 0 0 1 0 0 1 1 0"),
+  EXPECT_EQ(sceneErrorsOf("polygon 4 0 0 0 1 0 0 1 1 0"),
             "t.sc:1:1: error: polygon: expected 12 numbers for 4 vertices, found 9 before the end "
             "of the file");
   EXPECT_EQ(
-      errorsOf("polygon 4 0 0 0 1 0 0 1 1 0\nsphere 0 0 0 1\n"),
+      sceneErrorsOf("polygon 4 0 0 0 1 0 0 1 1 0\nsphere 0 0 0 1\n"),
       "t.sc:2:1: error: polygon: expected 12 numbers for 4 vertices, found 9 before 'sphere'");
-  EXPECT_EQ(errorsOf("polygon 3 0 0 0 1 0 0 0 1 z 5 6\nsphere 0 0 0 1\n"),
+  EXPECT_EQ(sceneErrorsOf("polygon 3 0 0 0 1 0 0 0 1 z 5 6\nsphere 0 0 0 1\n"),
             "t.sc:1:27: error: polygon: expected 9 numbers for 3 vertices, found 8 before 'z'");
 }
 
 TEST(ParserErrors, PolygonNonFiniteCoordinate) {
-  EXPECT_EQ(errorsOf("polygon 3 0 0 0 1 nan 0 0 1 0"),
+  EXPECT_EQ(sceneErrorsOf("polygon 3 0 0 0 1 nan 0 0 1 0"),
             "t.sc:1:19: error: polygon: Y2 is not a finite number ('nan')");
 }
 
@@ -782,18 +774,18 @@ TEST(ParserErrors, DegenerateAndNonPlanarPolygons) {
 
 TEST(ParserErrors, HugeVertexCountWithLittleTextFailsQuickly) {
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_EQ(errorsOf("polygon 4294967295 0 0 0"),
+  EXPECT_EQ(sceneErrorsOf("polygon 4294967295 0 0 0"),
             "t.sc:1:1: error: polygon: expected 12884901885 numbers for 4294967295 vertices, "
             "found 3 before the end of the file");
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
 }
 
 TEST(ParserErrors, UnbalancedPushAndPop) {
-  EXPECT_EQ(errorsOf("pop"), "t.sc:1:1: error: pop without matching push");
-  EXPECT_EQ(errorsOf("sphere 0 0 0 1\n  push\npush\npop\n"),
+  EXPECT_EQ(sceneErrorsOf("pop"), "t.sc:1:1: error: pop without matching push");
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1\n  push\npush\npop\n"),
             "t.sc:2:3: error: push without matching pop");
   EXPECT_EQ(
-      errorsOf("push\npush\n"),
+      sceneErrorsOf("push\npush\n"),
       "t.sc:1:1: error: push without matching pop\nt.sc:2:1: error: push without matching pop");
 }
 
@@ -802,49 +794,49 @@ TEST(ParserErrors, EachCameraCommandAtMostOnce) {
                               "background 0 0 0", "ambient 0 0 0"}) {
     SCOPED_TRACE(command);
     const std::string keyword = std::string(command).substr(0, std::string(command).find(' '));
-    EXPECT_EQ(errorsOf(std::string(command) + "\nsphere 0 0 0 1\n " + command + "\n"),
+    EXPECT_EQ(sceneErrorsOf(std::string(command) + "\nsphere 0 0 0 1\n " + command + "\n"),
               "t.sc:3:2: error: duplicate '" + keyword + "' (first given at t.sc:1:1)");
   }
 }
 
 TEST(ParserErrors, EyeEqualsLookat) {
-  EXPECT_EQ(errorsOf("eye 1 2 3\nfov 30\nlookat 1 2 3"),
+  EXPECT_EQ(sceneErrorsOf("eye 1 2 3\nfov 30\nlookat 1 2 3"),
             "t.sc:3:1: error: eye and lookat are the same point, so there is no view direction");
   // Without lookat: at eye (the default lookat is the origin).
-  EXPECT_EQ(errorsOf("fov 30\n eye 0 0 0"),
+  EXPECT_EQ(sceneErrorsOf("fov 30\n eye 0 0 0"),
             "t.sc:2:2: error: eye and lookat are the same point, so there is no view direction");
   // Without eye: at lookat (the default eye is (0,0,5)).
-  EXPECT_EQ(errorsOf("\n\n  lookat 0 0 5"),
+  EXPECT_EQ(sceneErrorsOf("\n\n  lookat 0 0 5"),
             "t.sc:3:3: error: eye and lookat are the same point, so there is no view direction");
   // Distinct, but 1e-300 squared underflows, so no direction can be computed.
-  EXPECT_EQ(errorsOf("eye 0 0 1e-300"),
+  EXPECT_EQ(sceneErrorsOf("eye 0 0 1e-300"),
             "t.sc:1:1: error: eye and lookat are too close together or too far apart to give a "
             "view direction");
 }
 
 TEST(ParserErrors, UpParallelToTheViewDirection) {
-  EXPECT_EQ(errorsOf("eye 0 5 0\nup 0 2 0"),
+  EXPECT_EQ(sceneErrorsOf("eye 0 5 0\nup 0 2 0"),
             "t.sc:2:1: error: up is parallel to the view direction (from eye to lookat)");
-  EXPECT_EQ(errorsOf("eye 0 5 0\nlookat 0 1 0\nup 0 -1 0"),
+  EXPECT_EQ(sceneErrorsOf("eye 0 5 0\nlookat 0 1 0\nup 0 -1 0"),
             "t.sc:3:1: error: up is parallel to the view direction (from eye to lookat)");
   // Without up, at where the view was written: lookat, else eye.
-  EXPECT_EQ(errorsOf("eye 0 5 0\nlookat 0 1 0"),
+  EXPECT_EQ(sceneErrorsOf("eye 0 5 0\nlookat 0 1 0"),
             "t.sc:2:1: error: up is parallel to the view direction (from eye to lookat)");
-  EXPECT_EQ(errorsOf("fov 30 eye 0 5 0"),
+  EXPECT_EQ(sceneErrorsOf("fov 30 eye 0 5 0"),
             "t.sc:1:8: error: up is parallel to the view direction (from eye to lookat)");
-  EXPECT_EQ(errorsOf("up 0 0 0"), "t.sc:1:1: error: up must not be the zero vector");
+  EXPECT_EQ(sceneErrorsOf("up 0 0 0"), "t.sc:1:1: error: up must not be the zero vector");
   // Not parallel, but the cross product with the view direction underflows.
-  EXPECT_EQ(errorsOf("up 1e-300 0 0"), "t.sc:1:1: error: up is too short to give a direction");
+  EXPECT_EQ(sceneErrorsOf("up 1e-300 0 0"), "t.sc:1:1: error: up is too short to give a direction");
   // Nearly parallel is fine.
   EXPECT_EQ(parse("eye 0 5 0\nup 0 1 1e-6").camera.up, Vec3(0, 1, 1e-6));
 }
 
 TEST(ParserErrors, IncludeSyntax) {
-  EXPECT_EQ(errorsOf("include # nothing"),
+  EXPECT_EQ(sceneErrorsOf("include # nothing"),
             "t.sc:1:1: error: include: expected PATH but reached the end of the file");
-  EXPECT_EQ(errorsOf("include \"a.sc\nsphere 0 0 0 1"),
+  EXPECT_EQ(sceneErrorsOf("include \"a.sc\nsphere 0 0 0 1"),
             "t.sc:1:9: error: include: PATH has no closing '\"' on its line");
-  EXPECT_EQ(errorsOf("include \"\""), "t.sc:1:9: error: include: PATH is empty");
+  EXPECT_EQ(sceneErrorsOf("include \"\""), "t.sc:1:9: error: include: PATH is empty");
 }
 
 TEST(ParserErrors, RecoveryReportsEveryProblem) {
@@ -854,11 +846,12 @@ TEST(ParserErrors, RecoveryReportsEveryProblem) {
                      "surface 1 1 1 1 0 0 1 0\n" // still parsed: IR at column 23
                      "sphere 1 2 x 4\n"          // x at column 12; x and 4 skipped
                      "sphere 0 0 0 1\n";         // fine
-  EXPECT_EQ(errorsOf(text), "t.sc:1:14: error: sphere: negative radius '-1'\n"
-                            "t.sc:2:1: error: unknown keyword 'bogus'\n"
-                            "t.sc:4:1: error: light: expected B (a number) but found 'surface'\n"
-                            "t.sc:4:23: error: surface: IR must be positive, found '0'\n"
-                            "t.sc:5:12: error: sphere: expected Z (a number) but found 'x'");
+  EXPECT_EQ(sceneErrorsOf(text),
+            "t.sc:1:14: error: sphere: negative radius '-1'\n"
+            "t.sc:2:1: error: unknown keyword 'bogus'\n"
+            "t.sc:4:1: error: light: expected B (a number) but found 'surface'\n"
+            "t.sc:4:23: error: surface: IR must be positive, found '0'\n"
+            "t.sc:5:12: error: sphere: expected Z (a number) but found 'x'");
 }
 
 TEST(ParserErrors, AtMostFiftyErrorsThenTooManyErrors) {

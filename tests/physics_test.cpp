@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/tracer.h"
 #include "tests/scene_builder.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +24,7 @@ using test::addLight;
 using test::addMaterial;
 using test::addPolygon;
 using test::addSphere;
+using test::expectVecNear;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -58,12 +60,6 @@ void expectColorNear(const Color& got, const Color& want, double rel = 1e-12,
     EXPECT_NEAR(got[c], want[c], rel * std::max(std::abs(want[c]), floor))
         << "channel " << c << ": got (" << got.x << ", " << got.y << ", " << got.z << ") want ("
         << want.x << ", " << want.y << ", " << want.z << ")";
-}
-
-void expectVecNear(const Vec3& got, const Vec3& want, double tol) {
-  EXPECT_NEAR(got.x, want.x, tol);
-  EXPECT_NEAR(got.y, want.y, tol);
-  EXPECT_NEAR(got.z, want.z, tol);
 }
 
 // A scene with one large floor square at z = 0 facing +z.

@@ -8,6 +8,7 @@
 #include "core/sphere_mesh.h"
 #include "core/tracer.h"
 #include "core/triangle.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -170,19 +171,11 @@ TEST(SmoothTriangle, ScLanguage) {
   EXPECT_NEAR(glm::length(geometricNormal(s.triangles[2], s.meshVertices.data()) - Vec3(0, 0, 1)),
               0.0, 1e-15);
 
-  const auto message = [](const std::string& text) {
-    try {
-      parseScene(text, "t.sc");
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_EQ(message("triangle 0 0 0  1 1 1  2 2 2"),
+  EXPECT_EQ(test::sceneErrorsOf("triangle 0 0 0  1 1 1  2 2 2"),
             "t.sc:1:1: error: triangle: degenerate triangle (zero area)");
-  EXPECT_EQ(message("ptriangle 0 0 0 0 0 1  1 0 0 0 0 0  0 1 0 0 0 1"),
+  EXPECT_EQ(test::sceneErrorsOf("ptriangle 0 0 0 0 0 1  1 0 0 0 0 0  0 1 0 0 0 1"),
             "t.sc:1:30: error: ptriangle: N2 (NX2 NY2 NZ2) must not be the zero vector");
-  EXPECT_EQ(message("triangle 0 0 0  1 0 0  0 1"),
+  EXPECT_EQ(test::sceneErrorsOf("triangle 0 0 0  1 0 0  0 1"),
             "t.sc:1:1: error: triangle: expected Z3 but reached the end of the file");
 }
 

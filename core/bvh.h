@@ -46,9 +46,6 @@ private:
   struct BuildContext;
   std::uint32_t collapse(BuildContext& context, std::uint32_t binaryNode, int depth);
 
-  // Entries a traversal stack may need: three siblings pushed per level.
-  std::size_t stackDepth() const { return 3 * std::size_t(depth_) + 1; }
-
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
 

@@ -150,7 +150,7 @@ std::uint64_t mortonCode(const Vec3& p) {
 }
 
 struct SoupTriangle {
-  std::uint64_t order; // generation order, or Morton code of the centre
+  std::uint64_t morton; // of the centre
   std::array<Vec3, 3> vertices;
 };
 
@@ -179,10 +179,12 @@ Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::
       const double a = phase + k * 2.0 * std::numbers::pi / 3.0;
       soup[i].vertices[std::size_t(k)] = c + radius * (std::cos(a) * e1 + std::sin(a) * e2);
     }
-    soup[i].order = spatialOrder ? mortonCode(c) : i;
+    soup[i].morton = mortonCode(c);
   }
-  std::stable_sort(soup.begin(), soup.end(),
-                   [](const SoupTriangle& a, const SoupTriangle& b) { return a.order < b.order; });
+  if (spatialOrder)
+    std::stable_sort(soup.begin(), soup.end(), [](const SoupTriangle& a, const SoupTriangle& b) {
+      return a.morton < b.morton;
+    });
 
   scene.polygons.reserve(triangles);
   scene.polygonVertices.reserve(3 * triangles);

@@ -137,12 +137,6 @@ void RenderSession::setCamera(const CameraSpec& camera) {
   startWorkers(false);
 }
 
-void RenderSession::setScene(Scene scene) {
-  auto next = std::make_unique<Scene>(std::move(scene));
-  auto accel = makeAccel(*next, accelKind_); // while the old scene still renders
-  setScene(std::move(next), std::move(accel));
-}
-
 void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel) {
   stopWorkers();
   accel_ = std::move(accel); // refers to *scene, so both change together

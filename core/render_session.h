@@ -85,9 +85,9 @@ public:
   void setLight(std::size_t index, const Light& light);
   void setAmbient(const Color& ambient);
   void setCamera(const CameraSpec& camera);
-  void setScene(Scene scene); // a reloaded scene: new geometry, new hierarchy
-  // The same with the hierarchy already built (by makeAccel(*scene,
-  // accelKind()), on another thread: for 10^6 primitives that takes a second).
+  // A reloaded scene: new geometry with its hierarchy, built by
+  // makeAccel(*scene, accelKind()) beforehand (on another thread: for 10^6
+  // primitives that takes a second).
   void setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel);
   AccelKind accelKind() const { return accelKind_; }
 

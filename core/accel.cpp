@@ -72,11 +72,15 @@ public:
     return found;
   }
 
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override {
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+              PrimitiveRef* blocker = nullptr) const override {
     for (const PrimitiveRef& ref : refs_) {
       if (skip != nullptr && ref == *skip) continue;
       double t;
-      if (intersectPrimitive(scene_, ref, ray, range, t)) return true;
+      if (intersectPrimitive(scene_, ref, ray, range, t)) {
+        if (blocker != nullptr) *blocker = ref;
+        return true;
+      }
     }
     return false;
   }

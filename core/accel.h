@@ -51,7 +51,10 @@ public:
   // that guarantee exact rather than a matter of tolerance.
   virtual bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
                           Hit& hit) const = 0;
-  virtual bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const = 0;
+  // Whether anything (but `skip`) is hit inside `range`; `blocker`, when given,
+  // receives the primitive found (any one, not necessarily the nearest).
+  virtual bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                      PrimitiveRef* blocker = nullptr) const = 0;
 
   // Bytes held by the structure itself (nodes and primitive references, not the
   // scene's primitives), for the benchmark's bytes per primitive.

@@ -267,7 +267,10 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
         if (skip != nullptr && prim == *skip) continue;
         double t;
         if (intersectPrimitive(scene_, prim, ray, range, t)) {
-          if constexpr (AnyHit) return true;
+          if constexpr (AnyHit) {
+            if (hit != nullptr) *hit = {t, prim}; // the blocker, when asked for
+            return true;
+          }
           keepNearest({t, prim}, found, *hit, range);
         }
       }
@@ -287,8 +290,12 @@ bool Bvh::closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip, H
   return traverse<false>(ray, range, skip, &hit);
 }
 
-bool Bvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const {
-  return traverse<true>(ray, range, skip, nullptr);
+bool Bvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                 PrimitiveRef* blocker) const {
+  Hit hit;
+  const bool found = traverse<true>(ray, range, skip, blocker != nullptr ? &hit : nullptr);
+  if (found && blocker != nullptr) *blocker = hit.primitive;
+  return found;
 }
 
 std::size_t Bvh::memoryBytes() const {

@@ -21,7 +21,8 @@ public:
 
   bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
                   Hit& hit) const override;
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override;
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+              PrimitiveRef* blocker = nullptr) const override;
   std::size_t memoryBytes() const override;
 
   std::size_t nodeCount() const { return nodes_.size(); }

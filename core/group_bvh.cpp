@@ -36,8 +36,10 @@ std::uint32_t GroupBvh::addNode(const std::vector<std::uint32_t>& children,
   node.childCount = std::uint32_t(children.size());
   node.primBegin = std::uint32_t(prims_.size());
   node.primCount = std::uint32_t(prims.size());
-  for (std::uint32_t c : children) node.box.extend(nodes_[c].box);
-  for (const PrimitiveRef& p : prims) node.box.extend(scene_.bounds(p));
+  for (std::uint32_t c : children)
+    node.box.extend(nodes_[c].box);
+  for (const PrimitiveRef& p : prims)
+    node.box.extend(scene_.bounds(p));
   node.box.pad();
   children_.insert(children_.end(), children.begin(), children.end());
   prims_.insert(prims_.end(), prims.begin(), prims.end());
@@ -52,7 +54,8 @@ std::uint32_t GroupBvh::buildSplit(std::vector<std::pair<T, Aabb>>& items, std::
                                    std::size_t end, std::size_t leafSize, MakeLeaf makeLeaf) {
   if (end - begin <= leafSize) return makeLeaf(begin, end);
   Aabb centres;
-  for (std::size_t i = begin; i < end; ++i) centres.extend(items[i].second.centroid());
+  for (std::size_t i = begin; i < end; ++i)
+    centres.extend(items[i].second.centroid());
   const int axis = longestAxis(centres.extent());
   const std::size_t mid = begin + (end - begin) / 2;
   const auto first = items.begin();
@@ -79,19 +82,23 @@ std::uint32_t GroupBvh::buildGroup(std::uint32_t groupIndex) {
   } else {
     std::vector<std::pair<PrimitiveRef, Aabb>> items;
     items.reserve(group.primitives.size());
-    for (const PrimitiveRef& ref : group.primitives) items.emplace_back(ref, scene_.bounds(ref));
+    for (const PrimitiveRef& ref : group.primitives)
+      items.emplace_back(ref, scene_.bounds(ref));
     children.push_back(buildSplit(items, 0, items.size(), kLeafSize, [&](auto b, auto e) {
       std::vector<PrimitiveRef> leaf;
-      for (auto i = b; i < e; ++i) leaf.push_back(items[i].first);
+      for (auto i = b; i < e; ++i)
+        leaf.push_back(items[i].first);
       return addNode({}, leaf);
     }));
   }
   if (children.size() > kMaxChildren) {
     std::vector<std::pair<std::uint32_t, Aabb>> items;
-    for (std::uint32_t c : children) items.emplace_back(c, nodes_[c].box);
+    for (std::uint32_t c : children)
+      items.emplace_back(c, nodes_[c].box);
     children = {buildSplit(items, 0, items.size(), kMaxChildren, [&](auto b, auto e) {
       std::vector<std::uint32_t> kids;
-      for (auto i = b; i < e; ++i) kids.push_back(items[i].first);
+      for (auto i = b; i < e; ++i)
+        kids.push_back(items[i].first);
       return addNode(kids, {});
     })};
   }
@@ -121,11 +128,15 @@ bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip
       if (skip != nullptr && ref == *skip) continue;
       double t;
       if (intersectPrimitive(scene_, ref, ray, range, t)) {
-        if constexpr (AnyHit) return true;
+        if constexpr (AnyHit) {
+          if (hit != nullptr) *hit = {t, ref}; // the blocker, when asked for
+          return true;
+        }
         keepNearest({t, ref}, found, *hit, range);
       }
     }
-    for (std::uint32_t i = 0; i < node.childCount; ++i) stack[top++] = children_[node.childBegin + i];
+    for (std::uint32_t i = 0; i < node.childCount; ++i)
+      stack[top++] = children_[node.childBegin + i];
   }
   return found;
 }
@@ -135,8 +146,12 @@ bool GroupBvh::closestHit(const Ray& ray, Interval range, const PrimitiveRef* sk
   return traverse<false>(ray, range, skip, &hit);
 }
 
-bool GroupBvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const {
-  return traverse<true>(ray, range, skip, nullptr);
+bool GroupBvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                      PrimitiveRef* blocker) const {
+  Hit hit;
+  const bool found = traverse<true>(ray, range, skip, blocker != nullptr ? &hit : nullptr);
+  if (found && blocker != nullptr) *blocker = hit.primitive;
+  return found;
 }
 
 } // namespace prism

@@ -15,7 +15,8 @@ public:
 
   bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
                   Hit& hit) const override;
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override;
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+              PrimitiveRef* blocker = nullptr) const override;
 
   std::size_t memoryBytes() const override {
     return nodes_.size() * sizeof(Node) + children_.size() * sizeof(std::uint32_t) +

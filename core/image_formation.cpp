@@ -36,7 +36,7 @@ std::vector<Tile> makeTiles(int width, int height, int size) {
   return tiles;
 }
 
-void tracePixelCentres(const Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
+void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
                        RayCounts& counts) {
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
@@ -51,7 +51,8 @@ void tracePixelCentres(const Tracer& tracer, const Camera& camera, const Tile& t
 double averageMax(const std::vector<Rgb>& radiance) {
   if (radiance.empty()) return 0.0;
   double sum = 0.0;
-  for (const Rgb& c : radiance) sum += double(std::max({c.r, c.g, c.b}));
+  for (const Rgb& c : radiance)
+    sum += double(std::max({c.r, c.g, c.b}));
   return sum / double(radiance.size());
 }
 
@@ -66,7 +67,7 @@ bool needsSupersampling(const Film& film, int x, int y, double avgmax, double th
          (y > 0 && differs(x, y - 1)) || (y + 1 < film.height && differs(x, y + 1));
 }
 
-Rgb supersamplePixel(const Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
+Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
                      RayCounts& counts) {
   Color sum(0.0);
   const std::uint64_t pixelKey =
@@ -86,7 +87,7 @@ Rgb supersamplePixel(const Tracer& tracer, const Camera& camera, int x, int y, b
   return toRgb(sum / 16.0);
 }
 
-int antialiasTile(const Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
+int antialiasTile(Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
                   double thresh, bool jitter, Film& film, RayCounts& counts) {
   int supersampled = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {

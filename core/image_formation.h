@@ -20,7 +20,7 @@ struct Tile {
 std::vector<Tile> makeTiles(int width, int height, int size = 32);
 
 // Pass 1 over a tile: one eye ray through each pixel centre (ix + 0.5, iy + 0.5).
-void tracePixelCentres(const Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
+void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
                        RayCounts& counts);
 
 // Mean over all pixels of max(r, g, b), summed in pixel order so the result is
@@ -33,12 +33,12 @@ bool needsSupersampling(const Film& film, int x, int y, double avgmax, double th
 
 // The mean of 16 eye rays on a 4x4 grid of sub-pixel cells: cell centres, or a
 // point jittered within each cell (deterministic per pixel and cell).
-Rgb supersamplePixel(const Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
+Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
                      RayCounts& counts);
 
 // Pass 2 over a tile: every pixel that needsSupersampling gets supersamplePixel;
 // the others keep their centre sample. Returns the number supersampled.
-int antialiasTile(const Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
+int antialiasTile(Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
                   double thresh, bool jitter, Film& film, RayCounts& counts);
 
 } // namespace prism

@@ -152,7 +152,6 @@ Scene RenderSession::sceneCopy() const { return *scene_; }
 void RenderSession::run(Work& work, bool keepPass1) {
   const RenderSettings s = settings_;
   const Camera camera(scene_->camera, s.width, s.height);
-  const Tracer tracer(*scene_, *accel_, s.maxDepth);
   const std::vector<Tile> tiles = makeTiles(s.width, s.height, s.tileSize);
   const int threads = resolveThreadCount(s.threads);
   auto cancelled = [this] { return cancel_.load(std::memory_order_relaxed); };
@@ -166,22 +165,24 @@ void RenderSession::run(Work& work, bool keepPass1) {
     apply();
     version_.fetch_add(1, std::memory_order_release);
   };
-  // Every tile on the worker threads: sample(x, y, counts) for each pixel
-  // (nothing where the pass has nothing to do), then the tile's samples and
-  // counts handed to store() at once under the lock, so a cancelled tile is
-  // dropped whole, never half-published.
+  // Every tile on the worker threads: sample(tracer, x, y, counts) for each
+  // pixel (nothing where the pass has nothing to do), with a Tracer of the
+  // tile's own (it belongs to one thread), then the tile's samples and counts
+  // handed to store() at once under the lock, so a cancelled tile is dropped
+  // whole, never half-published.
   auto sampleTiles = [&](auto&& sample, auto&& store) {
     parallelFor(
         int(tiles.size()), threads,
         [&](int item, int) {
           lowerCurrentThreadPriority();
           const Tile& tile = tiles[std::size_t(item)];
+          Tracer tracer(*scene_, *accel_, s.maxDepth);
           RayCounts counts;
           std::vector<Sample> samples;
           for (int y = tile.y0; y < tile.y1; ++y) {
             if (cancelled()) return;
             for (int x = tile.x0; x < tile.x1; ++x)
-              if (const std::optional<Rgb> c = sample(x, y, counts))
+              if (const std::optional<Rgb> c = sample(tracer, x, y, counts))
                 samples.push_back({work.film.index(x, y), *c});
           }
           publish([&] { store(samples, counts); });
@@ -193,7 +194,7 @@ void RenderSession::run(Work& work, bool keepPass1) {
     for (int level = kCoarsestLevel; level >= 1; level /= 2) {
       publish([&] { work.level = level; });
       sampleTiles(
-          [&](int x, int y, RayCounts& counts) -> std::optional<Rgb> {
+          [&](Tracer& tracer, int x, int y, RayCounts& counts) -> std::optional<Rgb> {
             if (!isNewAtLevel(x, y, level)) return std::nullopt;
             ++counts.eyePrimary;
             const Color c = tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts);
@@ -232,7 +233,7 @@ void RenderSession::run(Work& work, bool keepPass1) {
   });
 
   sampleTiles(
-      [&](int x, int y, RayCounts& counts) -> std::optional<Rgb> {
+      [&](Tracer& tracer, int x, int y, RayCounts& counts) -> std::optional<Rgb> {
         if (!needsSupersampling(work.film, x, y, avgmax, s.thresh)) return std::nullopt;
         return supersamplePixel(tracer, camera, x, y, s.jitter, counts);
       },

@@ -10,7 +10,6 @@ namespace prism {
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                     const ProgressCallback& progress) {
   const Camera camera(scene.camera, settings.width, settings.height);
-  const Tracer tracer(scene, accel, settings.maxDepth);
   const std::vector<Tile> tiles = makeTiles(settings.width, settings.height, settings.tileSize);
   const int threads = resolveThreadCount(settings.threads);
   const int tileCount = int(tiles.size());
@@ -31,7 +30,9 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
     progress({pass, 0.5 * double(tilesDone) / double(tileCount) + (pass == 2 ? 0.5 : 0.0)});
   };
 
+  // A Tracer per tile: it belongs to one thread (see core/tracer.h).
   parallelFor(tileCount, threads, [&](int i, int worker) {
+    Tracer tracer(scene, accel, settings.maxDepth);
     tracePixelCentres(tracer, camera, tiles[std::size_t(i)], result.film,
                       counts[std::size_t(worker)]);
     reportTile(1);
@@ -40,14 +41,17 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
 
   tilesDone = 0;
   parallelFor(tileCount, threads, [&](int i, int worker) {
+    Tracer tracer(scene, accel, settings.maxDepth);
     supersampled[std::size_t(i)] =
         antialiasTile(tracer, camera, tiles[std::size_t(i)], result.avgmax, settings.thresh,
                       settings.jitter, result.film, counts[std::size_t(worker)]);
     reportTile(2);
   });
 
-  for (const RayCounts& c : counts) result.counts += c;
-  for (long long s : supersampled) result.supersampledPixels += s;
+  for (const RayCounts& c : counts)
+    result.counts += c;
+  for (long long s : supersampled)
+    result.supersampledPixels += s;
   return result;
 }
 

@@ -41,11 +41,13 @@ bool isFlat(PrimitiveRef ref) {
 
 } // namespace
 
-Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth)
-    : scene_(scene), accel_(accel), maxDepth_(maxDepth) {}
+Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCache cache)
+    : scene_(scene), accel_(accel), maxDepth_(maxDepth) {
+  if (cache == BlockerCache::On) lastBlocker_.resize(std::size_t(maxDepth) * scene.lights.size());
+}
 
 Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* record,
-                    const PrimitiveRef* skip) const {
+                    const PrimitiveRef* skip) {
   if (record != nullptr) {
     record->ray = ray;
     record->depth = depth;
@@ -58,8 +60,24 @@ Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* r
   return shade(ray, hit, depth, counts, record);
 }
 
+bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
+                     int depth) {
+  const Interval range{0.0, length};
+  if (lastBlocker_.empty()) return accel_.anyHit(ray, range, skip);
+  std::optional<PrimitiveRef>& last =
+      lastBlocker_[std::size_t(std::min(depth, maxDepth_) - 1) * scene_.lights.size() + light];
+  double t;
+  if (last && !(skip != nullptr && *skip == *last) &&
+      intersectPrimitive(scene_, *last, ray, range, t))
+    return true;
+  PrimitiveRef blocker;
+  if (!accel_.anyHit(ray, range, skip, &blocker)) return false;
+  last = blocker;
+  return true;
+}
+
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts,
-                    RayTreeNode* record) const {
+                    RayTreeNode* record) {
   const Material& m = scene_.material(hit.primitive);
   const Vec3 point = ray.at(hit.t);
   const Vec3 normal = outwardNormal(scene_, hit.primitive, point);
@@ -113,12 +131,11 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
       const double shadowLength = glm::length(shadowToLight);
       ++counts.shadow;
       // A blocker at or beyond the light does not count: the range ends there.
-      term.shadowed = shadowLength > 0.0 &&
-                      accel_.anyHit({frame.above, shadowToLight / shadowLength},
-                                    Interval{0.0, shadowLength}, skip);
+      term.shadowed = shadowLength > 0.0 && blocked({frame.above, shadowToLight / shadowLength},
+                                                    shadowLength, skip, i, depth);
       if (term.shadowed && record != nullptr) {
-        accel_.closestHit({frame.above, shadowToLight / shadowLength},
-                          Interval{0.0, shadowLength}, skip, term.blocker);
+        accel_.closestHit({frame.above, shadowToLight / shadowLength}, Interval{0.0, shadowLength},
+                          skip, term.blocker);
       }
       if (!term.shadowed) {
         term.diffuse = light.intensity * (term.cosine * invR2);

@@ -293,7 +293,12 @@ TEST(Accel, AnyHitAgreesWithClosestHitOnOcclusion) {
         Hit h;
         const bool blocked = accel->closestHit(ray, range, nullptr, h);
         EXPECT_EQ(accel->anyHit(ray, range, nullptr), blocked) << accelKindName(kind);
+        // The blocker it names really lies on the ray inside the range.
+        PrimitiveRef blocker{PrimitiveKind::Sphere, 0xffffffffu};
+        EXPECT_EQ(accel->anyHit(ray, range, nullptr, &blocker), blocked);
         if (blocked) {
+          double t;
+          EXPECT_TRUE(intersectPrimitive(scene, blocker, ray, range, t));
           EXPECT_LT(h.t, length);
           // With the range ending just before the blocker, nothing blocks.
           EXPECT_FALSE(accel->anyHit(ray, Interval{0.0, h.t}, nullptr));

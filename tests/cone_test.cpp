@@ -217,7 +217,7 @@ TEST(Cone, InsideOfATubeCountsAsLeaving) {
                              "cone 0 0 -1 2  0 0 1 2\n",
                              "t.sc");
   const auto accel = makeAccel(s, AccelKind::Bvh);
-  const Tracer tracer(s, *accel, 1);
+  Tracer tracer(s, *accel, 1);
   RayCounts counts;
   RayTreeNode node;
   const Color c = tracer.trace(ray({0, 0, 0}, {0, 1, 0}), 1, counts, &node);

@@ -1,7 +1,9 @@
 // The same inputs give the same picture and the same counts whatever the number
 // of threads and the tile size (which changes the order of work).
+#include "core/camera.h"
 #include "core/renderer.h"
 #include "core/scene_parser.h"
+#include "core/tracer.h"
 
 #include <gtest/gtest.h>
 
@@ -69,6 +71,56 @@ TEST(Determinism, BvhAndGroupsGiveTheSamePictureOfEveryShippedScene) {
                     renderWith(scene, *bvh, 2, 32, false));
   }
 }
+
+// Passes every query on and counts the shadow queries (any-hit) it is asked.
+class CountingAccel final : public Accel {
+public:
+  explicit CountingAccel(const Accel& inner) : inner_(inner) {}
+  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                  Hit& hit) const override {
+    return inner_.closestHit(ray, range, skip, hit);
+  }
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+              PrimitiveRef* blocker = nullptr) const override {
+    ++anyHits;
+    return inner_.anyHit(ray, range, skip, blocker);
+  }
+  std::size_t memoryBytes() const override { return inner_.memoryBytes(); }
+  mutable long long anyHits = 0;
+
+private:
+  const Accel& inner_;
+};
+
+class BlockerCache : public ::testing::TestWithParam<const char*> {};
+
+// The tracer's memory of the last shadow blocker answers some shadow rays
+// without the Accel, and every answer is the one the Accel alone gives.
+TEST_P(BlockerCache, SameRadianceAndCountsWithFewerAccelQueries) {
+  const Scene scene = loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + GetParam());
+  const auto bvh = makeAccel(scene, AccelKind::Bvh);
+  const CountingAccel cached(*bvh), uncached(*bvh);
+  const int depth = 6;
+  Tracer withCache(scene, cached, depth, Tracer::BlockerCache::On);
+  Tracer without(scene, uncached, depth, Tracer::BlockerCache::Off);
+  const Camera camera(scene.camera, 120, 90);
+  RayCounts countsWith, countsWithout;
+  long long differing = 0;
+  for (int y = 0; y < 90; ++y)
+    for (int x = 0; x < 120; ++x) {
+      const Ray ray = camera.eyeRay(x + 0.5, y + 0.5);
+      differing += withCache.trace(ray, 1, countsWith) != without.trace(ray, 1, countsWithout);
+    }
+  EXPECT_EQ(differing, 0);
+  EXPECT_EQ(countsWith, countsWithout);
+  // Every shadow ray reaches the Accel without the cache; with it, fewer do.
+  EXPECT_EQ(uncached.anyHits, countsWithout.shadow);
+  EXPECT_GT(countsWithout.shadow, 1000);
+  EXPECT_LT(cached.anyHits, uncached.anyHits);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, BlockerCache,
+                         ::testing::Values("table.sc", "glass.sc", "chex.sc"));
 
 } // namespace
 } // namespace prism

@@ -131,7 +131,7 @@ TEST(SupersamplePixel, SixteenSamplesAtCellCentres) {
   // Sub-sample columns of pixel 1 are at sx = 1.125, 1.375, 1.625, 1.875. An edge
   // at sx = 1.3 leaves three of the four columns white: mean exactly 0.75.
   HalfPlaneScene s(worldX(1.3));
-  const Tracer tracer(s.scene, *s.accel, 1);
+  Tracer tracer(s.scene, *s.accel, 1);
   const Camera camera(s.scene.camera, 4, 4);
   RayCounts counts;
   const Rgb c = supersamplePixel(tracer, camera, 1, 2, false, counts);
@@ -140,7 +140,7 @@ TEST(SupersamplePixel, SixteenSamplesAtCellCentres) {
   EXPECT_EQ(counts.eyePrimary, 0u);
   // Edge at sx = 1.5: exactly half.
   HalfPlaneScene half(worldX(1.5));
-  const Tracer t2(half.scene, *half.accel, 1);
+  Tracer t2(half.scene, *half.accel, 1);
   EXPECT_FLOAT_EQ(supersamplePixel(t2, camera, 1, 0, false, counts).g, 0.5f);
 }
 
@@ -148,14 +148,14 @@ TEST(SupersamplePixel, JitterStaysInsideCellsAndIsDeterministic) {
   // Edge on a cell boundary (sx = 1.25): a jittered sample never crosses it,
   // so the mean is the same as without jitter.
   HalfPlaneScene s(worldX(1.25));
-  const Tracer tracer(s.scene, *s.accel, 1);
+  Tracer tracer(s.scene, *s.accel, 1);
   const Camera camera(s.scene.camera, 4, 4);
   RayCounts counts;
   EXPECT_FLOAT_EQ(supersamplePixel(tracer, camera, 1, 1, true, counts).r, 0.75f);
   // Edge inside a cell column: jitter gives some multiple of 1/16 between the
   // all-black and all-white outcomes of that column, the same on every call.
   HalfPlaneScene mid(worldX(1.3));
-  const Tracer t2(mid.scene, *mid.accel, 1);
+  Tracer t2(mid.scene, *mid.accel, 1);
   const Rgb a = supersamplePixel(t2, camera, 1, 1, true, counts);
   const Rgb b = supersamplePixel(t2, camera, 1, 1, true, counts);
   EXPECT_EQ(a, b);
@@ -166,7 +166,7 @@ TEST(SupersamplePixel, JitterStaysInsideCellsAndIsDeterministic) {
 
 TEST(AntialiasTile, SupersamplesOnlyPixelsAtTheEdgeAndKeepsPassOne) {
   HalfPlaneScene s(worldX(2.3)); // edge inside pixel column 2
-  const Tracer tracer(s.scene, *s.accel, 1);
+  Tracer tracer(s.scene, *s.accel, 1);
   const Camera camera(s.scene.camera, 4, 4);
   Film film(4, 4);
   RayCounts counts;

@@ -129,7 +129,7 @@ TEST(Nff, Primitives) {
 TEST(Nff, TracesToHandComputedRadiance) {
   const Scene s = parseNff(kScene, "t.nff");
   const auto accel = makeAccel(s, AccelKind::Bvh);
-  const Tracer tracer(s, *accel, 1);
+  Tracer tracer(s, *accel, 1);
   RayCounts counts;
   const Color c = tracer.trace(Ray{{0, 0, 10}, {0, 0, -1}}, 1, counts);
   const double e = 25.0 / 16.0;

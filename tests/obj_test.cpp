@@ -210,7 +210,7 @@ TEST_F(Obj, DefaultCameraAndLights) {
 TEST_F(Obj, TracesToHandComputedRadiance) {
   const Scene s = loadObj(write("t.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n"));
   const auto accel = makeAccel(s, AccelKind::Bvh);
-  const Tracer tracer(s, *accel, 1);
+  Tracer tracer(s, *accel, 1);
   RayCounts counts;
   const Color c =
       tracer.trace(Ray{s.camera.eye, glm::normalize(s.camera.lookat - s.camera.eye)}, 1, counts);

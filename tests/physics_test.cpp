@@ -40,7 +40,7 @@ struct Traced {
 // give the same radiance and counts).
 Traced run(const Scene& scene, const Ray& ray, int maxDepth, AccelKind kind = AccelKind::Groups) {
   const auto accel = makeAccel(scene, kind);
-  const Tracer tracer(scene, *accel, maxDepth);
+  Tracer tracer(scene, *accel, maxDepth);
   Traced out;
   out.radiance = tracer.trace(ray, 1, out.counts, &out.tree);
   RayCounts plainCounts;
@@ -681,7 +681,7 @@ TEST(Degenerate, AllBlackSceneIsExactlyBlack) {
   spec.up = Vec3(0, 0, 1);
   const Camera cam(spec, 16, 16);
   const auto accel = makeAccel(scene, AccelKind::Groups);
-  const Tracer tracer(scene, *accel, 8);
+  Tracer tracer(scene, *accel, 8);
   RayCounts counts;
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
@@ -785,7 +785,7 @@ Expect analyticRadiance(const Ray& ray, Color& out, bool& shadowed) {
 
 std::vector<Color> renderGrid(const Scene& scene, int size, int maxDepth, RayCounts& counts) {
   const auto accel = makeAccel(scene, AccelKind::Groups);
-  const Tracer tracer(scene, *accel, maxDepth);
+  Tracer tracer(scene, *accel, maxDepth);
   const Camera cam(scene.camera, size, size);
   std::vector<Color> out;
   out.reserve(std::size_t(size * size));

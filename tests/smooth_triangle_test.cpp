@@ -125,7 +125,7 @@ TEST(SmoothTriangle, TracerUsesInterpolatedNormalWithFallback) {
   const Scene s = traceScene("light 0 0 10  1 1 1\n"
                              "ptriangle -1 -1 0  1 0 1   1 -1 0  1 0 1   0 1 0  1 0 1\n");
   const auto accel = makeAccel(s, AccelKind::Bvh);
-  const Tracer tracer(s, *accel, 1);
+  Tracer tracer(s, *accel, 1);
   RayCounts counts;
   RayTreeNode front, back;
   const Color c = tracer.trace(ray({0, 0, 5}, {0, 0, -1}), 1, counts, &front);
@@ -144,7 +144,7 @@ TEST(SmoothTriangle, TracerUsesInterpolatedNormalWithFallback) {
       traceScene("light 0 0 10  1 1 1\n"
                  "ptriangle -1 -1 0  1 0 -0.2   1 -1 0  1 0 -0.2   0 1 0  1 0 -0.2\n");
   const auto accel2 = makeAccel(bent, AccelKind::Bvh);
-  const Tracer tracer2(bent, *accel2, 1);
+  Tracer tracer2(bent, *accel2, 1);
   RayTreeNode node;
   const Color c2 = tracer2.trace(ray({0, 0, 5}, {0, 0, -1}), 1, counts, &node);
   EXPECT_NEAR(glm::length(node.shadingNormal - node.normal), 0.0, 1e-15);
@@ -207,7 +207,7 @@ TEST(SmoothTriangle, TessellatedSphereShadesLikeAnalyticSphere) {
 
   const auto accelA = makeAccel(analytic, AccelKind::Bvh);
   const auto accelM = makeAccel(mesh, AccelKind::Bvh);
-  const Tracer a(analytic, *accelA, 1), m(mesh, *accelM, 1);
+  Tracer a(analytic, *accelA, 1), m(mesh, *accelM, 1);
   const Camera camera(analytic.camera, 96, 96);
   double worst = 0.0;
   int compared = 0;

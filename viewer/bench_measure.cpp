@@ -34,9 +34,10 @@ public:
     }
     return inner_.closestHit(ray, range, skip, hit);
   }
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip) const override {
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+              PrimitiveRef* blocker = nullptr) const override {
     if (rays_.shadow.size() < cap_) rays_.shadow.push_back(query(ray, range, skip));
-    return inner_.anyHit(ray, range, skip);
+    return inner_.anyHit(ray, range, skip, blocker);
   }
   std::size_t memoryBytes() const override { return inner_.memoryBytes(); }
 
@@ -55,8 +56,9 @@ private:
 
 using Clock = std::chrono::steady_clock;
 
-// Runs work(i) -> (rays traced, hit?) over queries [0, n) with the given stride,
-// on `threads` threads, and returns rays per second.
+// Runs work(i, worker) -> (rays traced, hit?) over queries [0, n) with the
+// given stride, on `threads` threads (worker 0 .. threads - 1), and returns
+// rays per second.
 template <class Work>
 Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& work) {
   Throughput result;
@@ -66,7 +68,7 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
   const double probeStart = threadCpuSeconds();
   std::size_t probed = 0;
   for (std::size_t i = 0; i < n; i += probeStride, ++probed)
-    (void)work(i);
+    (void)work(i, 0);
   const double perQuery = (threadCpuSeconds() - probeStart) / double(probed);
   std::size_t stride = 1;
   if (perQuery * double(n) > budgetSeconds * double(threads)) {
@@ -80,7 +82,7 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
   auto chunk = [&](int c, int worker) {
     const std::size_t end = std::min(count, (std::size_t(c) + 1) * kChunk);
     for (std::size_t k = std::size_t(c) * kChunk; k < end; ++k) {
-      const auto [r, h] = work(k * stride);
+      const auto [r, h] = work(k * stride, worker);
       rays[std::size_t(worker)] += r;
       hits[std::size_t(worker)] += h ? 1 : 0;
     }
@@ -119,7 +121,9 @@ RaySet recordRays(const Scene& scene, const Accel& accel, int width, int height,
   RaySet rays;
   RecordingAccel recorder(accel, rays, cap);
   const Camera camera(scene.camera, width, height);
-  const Tracer tracer(scene, recorder, maxDepth);
+  // Every shadow ray reaches the recorder: none is answered by the tracer's
+  // blocker cache, so the shadow rays measured are all of them.
+  Tracer tracer(scene, recorder, maxDepth, Tracer::BlockerCache::Off);
   RayCounts counts;
   rays.eye.reserve(std::size_t(width) * std::size_t(height));
   // In the order the renderer traces them: tile by tile, rows within a tile.
@@ -138,7 +142,7 @@ RaySet recordRays(const Scene& scene, const Accel& accel, int width, int height,
 
 Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queries, bool anyHit,
                           int threads, double budgetSeconds) {
-  return run(queries.size(), threads, budgetSeconds, [&](std::size_t i) {
+  return run(queries.size(), threads, budgetSeconds, [&](std::size_t i, int) {
     const RayQuery& q = queries[i];
     const PrimitiveRef* skip = q.hasSkip ? &q.skip : nullptr;
     Hit hit;
@@ -150,11 +154,14 @@ Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queri
 
 Throughput measureShaded(const Scene& scene, const Accel& accel, const std::vector<RayQuery>& eye,
                          int maxDepth, int threads, double budgetSeconds) {
-  const Tracer tracer(scene, accel, maxDepth);
-  return run(eye.size(), threads, budgetSeconds, [&](std::size_t i) {
+  std::vector<Tracer> tracers; // one per worker thread
+  tracers.reserve(std::size_t(threads));
+  for (int w = 0; w < threads; ++w)
+    tracers.emplace_back(scene, accel, maxDepth);
+  return run(eye.size(), threads, budgetSeconds, [&](std::size_t i, int worker) {
     RayCounts counts;
     ++counts.eyePrimary;
-    const Color c = tracer.trace(eye[i].ray, 1, counts);
+    const Color c = tracers[std::size_t(worker)].trace(eye[i].ray, 1, counts);
     return std::pair<std::uint64_t, bool>(counts.total(), c != scene.background);
   });
 }

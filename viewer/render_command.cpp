@@ -32,7 +32,7 @@ double secondsSince(Clock::time_point start) {
 int printPixelTree(const Scene& scene, const Accel& accel, const RenderSettings& settings, int x,
                    int y) {
   const Camera camera(scene.camera, settings.width, settings.height);
-  const Tracer tracer(scene, accel, settings.maxDepth);
+  Tracer tracer(scene, accel, settings.maxDepth);
   RayCounts counts;
   RayTreeNode root;
   tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts, &root);

@@ -21,6 +21,13 @@ const std::map<std::string, AccelKind>& accelKindsByName() {
   return kinds;
 }
 
+std::uint64_t Accel::closestHits(std::span<const Ray> rays, std::span<Hit> hits) const {
+  std::uint64_t found = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    found |= std::uint64_t(closestHit(rays[i], Interval{}, nullptr, hits[i])) << i;
+  return found;
+}
+
 bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, Interval range,
                         double& t) {
   switch (ref.kind) {

@@ -6,9 +6,11 @@
 #include "core/scene.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 
 namespace prism {
@@ -55,6 +57,14 @@ public:
   // receives the primitive found (any one, not necessarily the nearest).
   virtual bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
                       PrimitiveRef* blocker = nullptr) const = 0;
+
+  // The nearest hits of a bundle of at most kMaxBundle rays that all start at
+  // the same point (eye rays through neighbouring pixels), each over the whole
+  // ray (Interval{}) with nothing skipped: bit i of the result says whether
+  // rays[i] hits anything, hits[i] what. Exactly closestHit's answer for each
+  // ray; an Accel may share the work of finding them.
+  static constexpr std::size_t kMaxBundle = 64;
+  virtual std::uint64_t closestHits(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   // Bytes held by the structure itself (nodes and primitive references, not the
   // scene's primitives), for the benchmark's bytes per primitive.

@@ -3,6 +3,7 @@
 #include "core/sah_builder.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -45,6 +46,7 @@ inline void store(double* out, Lanes a) {
   _mm_storeu_pd(out, a.lo);
   _mm_storeu_pd(out + 2, a.hi);
 }
+inline Lanes load(const double* p) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2)}; }
 #else
 // Internal and inlined, so GCC's note that such values are passed differently
 // with AVX is moot.
@@ -69,6 +71,11 @@ inline unsigned lessEqualMask(Lanes a, Lanes b) {
   return mask;
 }
 inline void store(double* out, Lanes a) { std::memcpy(out, &a, sizeof a); }
+inline Lanes load(const double* p) {
+  Lanes a;
+  std::memcpy(&a, p, sizeof a);
+  return a;
+}
 #endif
 
 constexpr std::uint32_t kKindShift = 29; // 3 bits of PrimitiveKind, 29 of index
@@ -115,6 +122,45 @@ struct NodeRay {
 };
 
 constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
+
+// The children waiting to be visited, each with where it is first entered
+// (Entry::t). On the machine stack unless the tree is deeper than that allows.
+template <class Entry> class TraversalStack {
+public:
+  explicit TraversalStack(int treeDepth) {
+    if (const std::size_t need = 3 * std::size_t(treeDepth) + 1; need > kLocalStack) {
+      heap_.resize(need);
+      entries_ = heap_.data();
+    }
+  }
+
+  // Sorts the n (at most 4) children just met nearest first, keeps all but the
+  // nearest, farthest deepest, and returns the nearest, to descend into at once.
+  Entry pushAllButNearest(Entry* children, int n) {
+    for (int i = 1; i < n; ++i)
+      for (int j = i; j > 0 && children[j].t < children[j - 1].t; --j)
+        std::swap(children[j], children[j - 1]);
+    for (int i = n - 1; i > 0; --i)
+      entries_[top_++] = children[i];
+    return children[0];
+  }
+
+  // The nearest waiting child that starts at or before `limit` (at exactly it
+  // too, for the tie-break of keepNearest); the others are dropped on the way.
+  bool pop(double limit, Entry& next) {
+    while (top_ > 0) {
+      next = entries_[--top_];
+      if (next.t <= limit) return true;
+    }
+    return false;
+  }
+
+private:
+  Entry local_[kLocalStack];
+  std::vector<Entry> heap_; // only for trees deeper than the local stack allows
+  Entry* entries_ = local_;
+  std::size_t top_ = 0;
+};
 
 // Single-precision bounds that contain the double-precision ones.
 float roundDown(double x) {
@@ -226,17 +272,11 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
     std::uint32_t ref;
     double t; // where the ray enters the child's box
   };
-  Entry local[kLocalStack];
-  std::vector<Entry> heap; // only for trees deeper than the local stack allows
-  Entry* stack = local;
-  if (std::size_t need = 3 * std::size_t(depth_) + 1; need > kLocalStack) {
-    heap.resize(need);
-    stack = heap.data();
-  }
-  std::size_t top = 0;
+  TraversalStack<Entry> stack(depth_);
   bool found = false;
-  std::uint32_t ref = 0;
+  Entry current{0, 0.0};
   for (;;) {
+    const std::uint32_t ref = current.ref;
     if ((ref & kLeafBit) == 0) {
       const Node& node = nodes_[ref];
       Lanes tFar;
@@ -249,14 +289,7 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
       for (int i = 0; i < 4; ++i)
         if ((hitMask >> i) & 1u) hits[n++] = {node.child[i], tEnter[i]};
       if (n > 0) {
-        // Nearest first: sort the few hits, push all but the nearest, farthest
-        // deepest, and descend into the nearest at once.
-        for (int i = 1; i < n; ++i)
-          for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; --j)
-            std::swap(hits[j], hits[j - 1]);
-        for (int i = n - 1; i > 0; --i)
-          stack[top++] = hits[i];
-        ref = hits[0].ref;
+        current = stack.pushAllButNearest(hits, n);
         continue;
       }
     } else {
@@ -275,15 +308,141 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
         }
       }
     }
-    // Next: the nearest waiting child that still starts before the nearest hit
-    // (at exactly its t too, for the tie-break of keepNearest).
-    for (;;) {
-      if (top == 0) return found;
-      --top;
-      if (stack[top].t <= range.max) break;
-    }
-    ref = stack[top].ref;
+    // Next: the nearest waiting child that still starts before the nearest hit.
+    if (!stack.pop(range.max, current)) return found;
   }
+}
+
+// A bundle of rays from one origin walks the tree together. Each node's four
+// boxes are tested once for the whole bundle with interval arithmetic: on each
+// axis the rays' reciprocal directions lie between the least and the greatest
+// of them (all of one sign), so with c = bound - origin, c * inv lies between
+// c * invLo and c * invHi, and rounding keeps that order. The bundle's entry
+// (the smallest of those) is thus at or before every ray's own computed entry
+// and its exit at or after every ray's exit: a box any ray of the bundle would
+// enter is entered, exactly as the one-ray test decides. The boxes of leaves
+// are then tested ray by ray with the one-ray test, and only the rays that
+// enter a leaf test its primitives, so every ray gets closestHit's answer.
+std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const {
+  const std::size_t count = rays.size();
+  // Per ray, four at a time: 1/d on each axis and the end of the ray's range
+  // (range.min is 0 for every ray). Lanes past `count` never enter a box.
+  constexpr std::size_t kSlots = kMaxBundle + 4;
+  double inv[3][kSlots], rangeMax[kSlots];
+  const double* origin = &rays[0].origin[0];
+  Lanes bundleOrigin[3], invLo[3], invHi[3];
+  int nearRow[3], farRow[3];
+  for (int a = 0; a < 3; ++a) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < count; ++i) {
+      inv[a][i] = 1.0 / rays[i].dir[a];
+      lo = std::min(lo, inv[a][i]);
+      hi = std::max(hi, inv[a][i]);
+    }
+    std::fill(&inv[a][count], &inv[a][kSlots], 1.0);
+    bundleOrigin[a] = broadcast(origin[a]);
+    invLo[a] = broadcast(lo);
+    invHi[a] = broadcast(hi);
+    nearRow[a] = 2 * a + (lo < 0.0 ? 1 : 0); // every ray has the sign of lo
+    farRow[a] = 2 * a + (lo < 0.0 ? 0 : 1);
+  }
+  std::fill(&rangeMax[0], &rangeMax[count], std::numeric_limits<double>::infinity());
+  std::fill(&rangeMax[count], &rangeMax[kSlots], -std::numeric_limits<double>::infinity());
+  std::uint64_t found = 0;
+  double bundleMax = std::numeric_limits<double>::infinity(); // the largest rangeMax
+
+  // The rays (a bit mask) that enter child c of `node`: the one-ray test of
+  // NodeRay::enter, term for term, four rays at a time.
+  auto raysEntering = [&](const Node& node, int c) {
+    double toNear[3], toFar[3];
+    for (int a = 0; a < 3; ++a) {
+      toNear[a] = double(node.bounds[nearRow[a]][c]) - origin[a];
+      toFar[a] = double(node.bounds[farRow[a]][c]) - origin[a];
+    }
+    std::uint64_t entering = 0;
+    for (std::size_t i = 0; i < count; i += 4) {
+      Lanes tNear = broadcast(0.0), tFar = load(&rangeMax[i]);
+      for (int a = 0; a < 3; ++a) {
+        const Lanes invA = load(&inv[a][i]);
+        tNear = maxOr(broadcast(toNear[a]) * invA, tNear);
+        tFar = minOr(broadcast(toFar[a]) * invA, tFar);
+      }
+      entering |= std::uint64_t(lessEqualMask(tNear, tFar)) << i;
+    }
+    return entering;
+  };
+
+  struct Entry {
+    std::uint32_t ref;
+    double t;           // where the bundle may first enter the child's box
+    std::uint64_t rays; // for a leaf: the rays that enter its box
+  };
+  TraversalStack<Entry> stack(depth_);
+  Entry current{0, 0.0, 0};
+  for (;;) {
+    if ((current.ref & kLeafBit) == 0) {
+      const Node& node = nodes_[current.ref];
+      Lanes tNear = broadcast(0.0), tFar = broadcast(bundleMax);
+      for (int a = 0; a < 3; ++a) {
+        const Lanes toNear = loadBounds(node.bounds[nearRow[a]]) - bundleOrigin[a];
+        const Lanes toFar = loadBounds(node.bounds[farRow[a]]) - bundleOrigin[a];
+        tNear = maxOr(minOr(toNear * invLo[a], toNear * invHi[a]), tNear);
+        tFar = minOr(maxOr(toFar * invLo[a], toFar * invHi[a]), tFar);
+      }
+      const unsigned mask = lessEqualMask(tNear, tFar);
+      double tEnter[4];
+      store(tEnter, tNear);
+      Entry next[4];
+      int n = 0;
+      for (int c = 0; c < 4; ++c) {
+        if ((mask >> c & 1u) == 0) continue;
+        std::uint64_t entering = 0;
+        if ((node.child[c] & kLeafBit) != 0 && (entering = raysEntering(node, c)) == 0) continue;
+        next[n++] = {node.child[c], tEnter[c], entering};
+      }
+      if (n > 0) {
+        current = stack.pushAllButNearest(next, n);
+        continue;
+      }
+    } else {
+      const std::uint32_t begin = current.ref & kFirstMask;
+      const std::uint32_t end = begin + ((current.ref >> kCountShift) & 0xf) + 1;
+      for (std::uint32_t p = begin; p < end; ++p) {
+        const PrimitiveRef prim = decodeRef(refs_[p]);
+        for (std::uint64_t m = current.rays; m != 0; m &= m - 1) {
+          const auto i = std::size_t(std::countr_zero(m));
+          Interval range{0.0, rangeMax[i]};
+          double t;
+          if (intersectPrimitive(scene_, prim, rays[i], range, t)) {
+            bool rayFound = (found >> i & 1u) != 0;
+            keepNearest({t, prim}, rayFound, hits[i], range);
+            rangeMax[i] = range.max;
+            found |= std::uint64_t(1) << i;
+          }
+        }
+      }
+      bundleMax = *std::max_element(&rangeMax[0], &rangeMax[count]);
+    }
+    if (!stack.pop(bundleMax, current)) return found;
+  }
+}
+
+bool walksTogether(std::span<const Ray> rays) {
+  if (rays.size() < 2 || rays.size() > Accel::kMaxBundle) return false;
+  for (const Ray& ray : rays) {
+    for (int a = 0; a < 3; ++a) {
+      const bool sameOrigin = ray.origin[a] == rays[0].origin[a];
+      const bool sameSign = (ray.dir[a] < 0.0) == (rays[0].dir[a] < 0.0);
+      // An infinite 1/d would make c * inv a NaN where c is 0.
+      if (!sameOrigin || !sameSign || !std::isfinite(1.0 / ray.dir[a])) return false;
+    }
+  }
+  return true;
+}
+
+std::uint64_t Bvh::closestHits(std::span<const Ray> rays, std::span<Hit> hits) const {
+  if (nodes_.empty() || !walksTogether(rays)) return Accel::closestHits(rays, hits);
+  return traverseBundle(rays, hits);
 }
 
 bool Bvh::closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit& hit) const {

@@ -15,6 +15,11 @@
 
 namespace prism {
 
+// Whether `rays` walk a Bvh together in Bvh::closestHits: 2 to
+// Accel::kMaxBundle rays from one origin whose directions have, on each axis,
+// one sign and no component so small (or zero) that its reciprocal is infinite.
+bool walksTogether(std::span<const Ray> rays);
+
 class Bvh final : public Accel {
 public:
   explicit Bvh(const Scene& scene);
@@ -23,6 +28,10 @@ public:
                   Hit& hit) const override;
   bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
               PrimitiveRef* blocker = nullptr) const override;
+  // Eye rays through neighbouring pixels walk the tree together (see
+  // core/bvh.cpp); a bundle that does not start at one point, or whose
+  // directions differ in sign or have a zero component, goes ray by ray.
+  std::uint64_t closestHits(std::span<const Ray> rays, std::span<Hit> hits) const override;
   std::size_t memoryBytes() const override;
 
   std::size_t nodeCount() const { return nodes_.size(); }
@@ -49,6 +58,7 @@ private:
 
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
+  std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   const Scene& scene_;
   std::vector<Node> nodes_;         // nodes_[0] is the root

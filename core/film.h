@@ -2,6 +2,8 @@
 // workers write disjoint tiles of it; nothing here is clamped or exposed.
 #pragma once
 
+#include "core/math.h"
+
 #include <glm/vec3.hpp>
 
 #include <cstddef>
@@ -12,13 +14,17 @@ namespace prism {
 
 using Rgb = glm::vec3; // float RGB radiance, as SPEC 2 keeps it per pixel
 
+inline Rgb toRgb(const Color& c) { return Rgb(float(c.r), float(c.g), float(c.b)); }
+
 struct Film {
   Film() = default;
   Film(int w, int h)
       : width(w), height(h), centre(std::size_t(w) * std::size_t(h), Rgb(0.0f)),
         radiance(centre.size(), Rgb(0.0f)), supersampled(centre.size(), 0) {}
 
-  std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+  std::size_t index(int x, int y) const {
+    return std::size_t(y) * std::size_t(width) + std::size_t(x);
+  }
   std::size_t pixelCount() const { return centre.size(); }
 
   int width = 0;

@@ -24,26 +24,44 @@ double distanceSquared(const Rgb& a, const Rgb& b) {
   return dr * dr + dg * dg + db * db;
 }
 
-Rgb toRgb(const Color& c) { return Rgb(float(c.r), float(c.g), float(c.b)); }
-
 } // namespace
 
+static_assert(kBundleSide * kBundleSide <= int(Accel::kMaxBundle));
+
+std::vector<Tile> splitTile(const Tile& tile, int size) {
+  std::vector<Tile> parts;
+  for (int y = tile.y0; y < tile.y1; y += size)
+    for (int x = tile.x0; x < tile.x1; x += size)
+      parts.push_back({x, y, std::min(x + size, tile.x1), std::min(y + size, tile.y1)});
+  return parts;
+}
+
 std::vector<Tile> makeTiles(int width, int height, int size) {
-  std::vector<Tile> tiles;
-  for (int y = 0; y < height; y += size)
-    for (int x = 0; x < width; x += size)
-      tiles.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
-  return tiles;
+  return splitTile({0, 0, width, height}, size);
+}
+
+void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pixel> pixels,
+                       std::span<Color> out, RayCounts& counts) {
+  Ray rays[Accel::kMaxBundle];
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+    rays[i] = camera.eyeRay(pixels[i].x + 0.5, pixels[i].y + 0.5);
+  counts.eyePrimary += (long long)pixels.size();
+  tracer.traceBundle(std::span(rays, pixels.size()), out.first(pixels.size()), counts);
 }
 
 void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
                        RayCounts& counts) {
-  for (int y = tile.y0; y < tile.y1; ++y) {
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      ++counts.eyePrimary;
-      const Rgb c = toRgb(tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts));
-      film.centre[film.index(x, y)] = c;
-      film.radiance[film.index(x, y)] = c;
+  for (const Tile& block : splitTile(tile, kBundleSide)) {
+    Pixel pixels[Accel::kMaxBundle];
+    std::size_t n = 0;
+    for (int y = block.y0; y < block.y1; ++y)
+      for (int x = block.x0; x < block.x1; ++x)
+        pixels[n++] = {x, y};
+    Color colors[Accel::kMaxBundle];
+    tracePixelCentres(tracer, camera, std::span(pixels, n), colors, counts);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t index = film.index(pixels[i].x, pixels[i].y);
+      film.centre[index] = film.radiance[index] = toRgb(colors[i]);
     }
   }
 }
@@ -69,9 +87,9 @@ bool needsSupersampling(const Film& film, int x, int y, double avgmax, double th
 
 Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
                      RayCounts& counts) {
-  Color sum(0.0);
   const std::uint64_t pixelKey =
       (std::uint64_t(std::uint32_t(y)) << 32) | std::uint64_t(std::uint32_t(x));
+  Ray rays[16];
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
       double u = 0.5, v = 0.5;
@@ -80,10 +98,16 @@ Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool ji
         u = unitFromBits(h);
         v = unitFromBits(mix(h));
       }
-      ++counts.eyeAntialias;
-      sum += tracer.trace(camera.eyeRay(x + (i + u) / 4.0, y + (j + v) / 4.0), 1, counts);
+      rays[j * 4 + i] = camera.eyeRay(x + (i + u) / 4.0, y + (j + v) / 4.0);
     }
   }
+  // The 16 rays share the eye: one bundle.
+  Color colors[16];
+  tracer.traceBundle(rays, colors, counts);
+  counts.eyeAntialias += 16;
+  Color sum(0.0);
+  for (const Color& c : colors)
+    sum += c;
   return toRgb(sum / 16.0);
 }
 

@@ -8,6 +8,7 @@
 #include "core/film.h"
 #include "core/tracer.h"
 
+#include <span>
 #include <vector>
 
 namespace prism {
@@ -19,9 +20,27 @@ struct Tile {
 // Row-major tiles of at most `size` x `size` pixels covering the image.
 std::vector<Tile> makeTiles(int width, int height, int size = 32);
 
-// Pass 1 over a tile: one eye ray through each pixel centre (ix + 0.5, iy + 0.5).
+// Row-major parts of at most `size` x `size` pixels covering `tile`.
+std::vector<Tile> splitTile(const Tile& tile, int size);
+
+// Eye rays through neighbouring pixels are traced as bundles
+// (Tracer::traceBundle) of kBundleSide x kBundleSide pixels: 64 rays, the
+// most a bundle holds; the tree is then walked once for all of them.
+inline constexpr int kBundleSide = 8;
+
+struct Pixel {
+  int x = 0, y = 0;
+};
+
+// Pass 1 over a tile: one eye ray through each pixel centre (ix + 0.5, iy + 0.5),
+// block by block of kBundleSide x kBundleSide pixels.
 void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
                        RayCounts& counts);
+
+// The eye rays through the centres of `pixels` (at most Accel::kMaxBundle) as
+// one bundle, their colours into `out`, counted as pass-1 eye rays.
+void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pixel> pixels,
+                       std::span<Color> out, RayCounts& counts);
 
 // Mean over all pixels of max(r, g, b), summed in pixel order so the result is
 // the same for any thread count.

@@ -165,25 +165,23 @@ void RenderSession::run(Work& work, bool keepPass1) {
     apply();
     version_.fetch_add(1, std::memory_order_release);
   };
-  // Every tile on the worker threads: sample(tracer, x, y, counts) for each
-  // pixel (nothing where the pass has nothing to do), with a Tracer of the
-  // tile's own (it belongs to one thread), then the tile's samples and counts
-  // handed to store() at once under the lock, so a cancelled tile is dropped
-  // whole, never half-published.
-  auto sampleTiles = [&](auto&& sample, auto&& store) {
+  // Every tile on the worker threads, in blocks of blockSide x blockSide
+  // pixels: sample(tracer, block, counts, samples) adds the block's samples
+  // (none where the pass has nothing to do), with a Tracer of the tile's own
+  // (it belongs to one thread); then the tile's samples and counts are handed
+  // to store() at once under the lock, so a cancelled tile is dropped whole,
+  // never half-published. Cancellation is checked block by block.
+  auto sampleTiles = [&](int blockSide, auto&& sample, auto&& store) {
     parallelFor(
         int(tiles.size()), threads,
         [&](int item, int) {
           lowerCurrentThreadPriority();
-          const Tile& tile = tiles[std::size_t(item)];
           Tracer tracer(*scene_, *accel_, s.maxDepth);
           RayCounts counts;
           std::vector<Sample> samples;
-          for (int y = tile.y0; y < tile.y1; ++y) {
+          for (const Tile& block : splitTile(tiles[std::size_t(item)], blockSide)) {
             if (cancelled()) return;
-            for (int x = tile.x0; x < tile.x1; ++x)
-              if (const std::optional<Rgb> c = sample(tracer, x, y, counts))
-                samples.push_back({work.film.index(x, y), *c});
+            sample(tracer, block, counts, samples);
           }
           publish([&] { store(samples, counts); });
         },
@@ -193,12 +191,20 @@ void RenderSession::run(Work& work, bool keepPass1) {
   if (!keepPass1) {
     for (int level = kCoarsestLevel; level >= 1; level /= 2) {
       publish([&] { work.level = level; });
+      // Any kBundleSide * level consecutive pixels hold kBundleSide multiples of
+      // `level`: a block of that side has at most a full bundle of new pixels.
       sampleTiles(
-          [&](Tracer& tracer, int x, int y, RayCounts& counts) -> std::optional<Rgb> {
-            if (!isNewAtLevel(x, y, level)) return std::nullopt;
-            ++counts.eyePrimary;
-            const Color c = tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts);
-            return Rgb(float(c.r), float(c.g), float(c.b));
+          kBundleSide * level,
+          [&](Tracer& tracer, const Tile& block, RayCounts& counts, std::vector<Sample>& samples) {
+            Pixel pixels[Accel::kMaxBundle];
+            std::size_t n = 0;
+            for (int y = block.y0; y < block.y1; ++y)
+              for (int x = block.x0; x < block.x1; ++x)
+                if (isNewAtLevel(x, y, level)) pixels[n++] = {x, y};
+            Color colors[Accel::kMaxBundle];
+            tracePixelCentres(tracer, camera, std::span(pixels, n), colors, counts);
+            for (std::size_t i = 0; i < n; ++i)
+              samples.push_back({work.film.index(pixels[i].x, pixels[i].y), toRgb(colors[i])});
           },
           [&](const std::vector<Sample>& samples, const RayCounts& counts) {
             for (const Sample& sample : samples) {
@@ -232,10 +238,16 @@ void RenderSession::run(Work& work, bool keepPass1) {
     work.pass1Counts = work.counts;
   });
 
+  // Small blocks: a supersampled pixel costs 16 eye rays and their trees, and
+  // an edit should not wait for many of them.
   sampleTiles(
-      [&](Tracer& tracer, int x, int y, RayCounts& counts) -> std::optional<Rgb> {
-        if (!needsSupersampling(work.film, x, y, avgmax, s.thresh)) return std::nullopt;
-        return supersamplePixel(tracer, camera, x, y, s.jitter, counts);
+      4,
+      [&](Tracer& tracer, const Tile& block, RayCounts& counts, std::vector<Sample>& samples) {
+        for (int y = block.y0; y < block.y1; ++y)
+          for (int x = block.x0; x < block.x1; ++x)
+            if (needsSupersampling(work.film, x, y, avgmax, s.thresh))
+              samples.push_back({work.film.index(x, y),
+                                 supersamplePixel(tracer, camera, x, y, s.jitter, counts)});
       },
       [&](const std::vector<Sample>& samples, const RayCounts& counts) {
         for (const Sample& sample : samples) {

@@ -60,6 +60,14 @@ Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* r
   return shade(ray, hit, depth, counts, record);
 }
 
+void Tracer::traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCounts& counts) {
+  Hit hits[Accel::kMaxBundle];
+  const std::uint64_t found = accel_.closestHits(rays, std::span(hits, rays.size()));
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    out[i] =
+        (found >> i & 1u) != 0 ? shade(rays[i], hits[i], 1, counts, nullptr) : scene_.background;
+}
+
 bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                      int depth) {
   const Interval range{0.0, length};

@@ -37,6 +37,11 @@ public:
   Color trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* record = nullptr,
               const PrimitiveRef* skip = nullptr);
 
+  // trace(rays[i], 1, counts) for eye rays that share their origin (at most
+  // Accel::kMaxBundle), into out[i]: the same colours and counts, with the
+  // nearest hits found for the bundle at once (Accel::closestHits).
+  void traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCounts& counts);
+
   int maxDepth() const { return maxDepth_; }
 
 private:

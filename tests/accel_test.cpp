@@ -5,6 +5,7 @@
 // any-hit agreeing with closest-hit on occlusion. Also the SAH builder's tree
 // and the BVH's size.
 #include "core/bvh.h"
+#include "core/camera.h"
 #include "core/sah_builder.h"
 #include "core/scene_generators.h"
 
@@ -337,6 +338,77 @@ TEST(Accel, GeneratedScenesMatchBruteForce) {
     }
   }
   EXPECT_GT(tally.hits, 500);
+}
+
+// Eye rays as the renderer bundles them (8x8 pixel blocks, 4x4 sub-pixel
+// grids), from cameras inside and around randomized scenes, and bundles that
+// cannot walk together (mixed signs, axis-parallel rays, two origins, one
+// ray): every ray gets brute force's nearest hit.
+TEST(Accel, BundlesOfRaysMatchBruteForce) {
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int together = 0, apart = 0, rays = 0, hits = 0;
+  auto expectBundle = [&](const Scene& scene, const std::vector<std::unique_ptr<Accel>>& accels,
+                          const Accel& brute, const std::vector<Ray>& bundle) {
+    (walksTogether(bundle) ? together : apart) += 1;
+    for (const auto& accel : accels) {
+      std::vector<Hit> got(bundle.size());
+      const std::uint64_t found = accel->closestHits(bundle, got);
+      for (std::size_t i = 0; i < bundle.size(); ++i) {
+        Hit expected;
+        const bool f = brute.closestHit(bundle[i], Interval{}, nullptr, expected);
+        ASSERT_EQ((found >> i & 1u) != 0, f) << "ray " << i << " of " << bundle.size();
+        if (!f) continue;
+        EXPECT_EQ(got[i].t, expected.t);
+        EXPECT_EQ(got[i].primitive, expected.primitive)
+            << scene.describe(got[i].primitive) << " vs " << scene.describe(expected.primitive);
+        hits += accel.get() == accels.front().get();
+      }
+      rays += int(bundle.size()) * (accel.get() == accels.front().get());
+    }
+  };
+  std::vector<Scene> scenes;
+  for (int i = 0; i < 3; ++i)
+    scenes.push_back(randomScene(rng, 400, 12));
+  scenes.push_back(makeScaledPolygonSoup(2000, 3));
+  scenes.push_back(makeSphereflake(400));
+  for (const Scene& scene : scenes) {
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    for (int view = 0; view < 6; ++view) {
+      CameraSpec spec;
+      spec.eye = Vec3(14 * u(rng), 14 * u(rng), 14 * u(rng)) * (view % 3 == 0 ? 0.3 : 1.0);
+      spec.lookat = Vec3(2 * u(rng), 2 * u(rng), 2 * u(rng));
+      spec.fov = 20 + 60 * std::abs(u(rng));
+      if (glm::length(glm::cross(spec.lookat - spec.eye, spec.up)) < 1e-6) continue;
+      const Camera camera(spec, 48, 40);
+      for (int by = 0; by < 40; by += 8)
+        for (int bx = 0; bx < 48; bx += 8) {
+          std::vector<Ray> block, grid;
+          for (int y = by; y < by + 8; ++y)
+            for (int x = bx; x < bx + 8; ++x)
+              block.push_back(camera.eyeRay(x + 0.5, y + 0.5));
+          expectBundle(scene, accels, *brute, block);
+          for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i)
+              grid.push_back(camera.eyeRay(bx + (i + 0.5) / 4.0, by + (j + 0.5) / 4.0));
+          expectBundle(scene, accels, *brute, grid);
+        }
+    }
+    // Axis-parallel rays (a zero component), mixed signs, two origins, one ray.
+    const Vec3 o(0.5, -0.25, 11.0);
+    expectBundle(scene, accels, *brute,
+                 {Ray{o, {0, 0, -1}}, Ray{o, glm::normalize(Vec3(0.1, 0.1, -1))}});
+    expectBundle(
+        scene, accels, *brute,
+        {Ray{o, glm::normalize(Vec3(-0.1, 0.1, -1))}, Ray{o, glm::normalize(Vec3(0.1, 0.1, -1))}});
+    expectBundle(scene, accels, *brute,
+                 {Ray{o, Vec3(0, 0, -1)}, Ray{o + Vec3(0.5, 0, 0), Vec3(0, 0, -1)}});
+    expectBundle(scene, accels, *brute, {Ray{o, glm::normalize(Vec3(0.05, 0.02, -1))}});
+  }
+  EXPECT_GT(together, 500); // most bundles took the shared walk
+  EXPECT_GE(apart, 20);
+  EXPECT_GT(hits, rays / 4);
 }
 
 TEST(Accel, DegenerateInputs) {

@@ -194,6 +194,7 @@ TEST_F(Cli, BenchPrintsItsTablesAndScalingData) {
   const RunResult run = prism("bench " + s + " --size 16 --accel bvh,none --budget 0.05 " +
                               "--scaling-max 1000 --data " + data.string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("| eye | eye 1-by-1 | shadow |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| s.sc | 1 | bvh |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| s.sc | 1 | none |"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| soup | 1000 | bvh |"), std::string::npos) << run.out;

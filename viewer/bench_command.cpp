@@ -64,7 +64,7 @@ struct Row {
   std::size_t primitives = 0;
   AccelKind accel = AccelKind::Bvh;
   double buildSeconds = 0.0, bytesPerPrim = 0.0;
-  Throughput eye, shadow, secondary, shaded;
+  Throughput eye, eyeOneByOne, shadow, secondary, shaded;
   std::optional<double> renderSeconds; // wall; nullopt: not run
   bool renderEstimated = false;
 };
@@ -72,15 +72,16 @@ struct Row {
 void printTable(const std::vector<Row>& rows, int threads) {
   std::cout << "\n"
             << threads << (threads == 1 ? " thread" : " threads")
-            << " (Mrays/s; intersection only for eye, shadow, secondary; shaded: every ray of a "
+            << " (Mrays/s; intersection only for eye, shadow, secondary: eye rays in the "
+               "renderer's bundles of 8 x 8 pixels, and one by one; shaded: every ray of a "
                "depth-limited trace of the eye rays, with shading)\n\n";
-  std::cout << "| scene | primitives | accel | build s | bytes/prim | eye | shadow | secondary | "
-               "shaded | render s |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  std::cout << "| scene | primitives | accel | build s | bytes/prim | eye | eye 1-by-1 | shadow | "
+               "secondary | shaded | render s |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows) {
     std::cout << "| " << r.scene << " | " << r.primitives << " | " << accelKindName(r.accel)
               << " | " << fixed(r.buildSeconds, 3) << " | " << fixed(r.bytesPerPrim, 1) << " | "
-              << mrays(r.eye) << " | " << mrays(r.shadow) << " | " << mrays(r.secondary) << " | "
-              << mrays(r.shaded) << " | "
+              << mrays(r.eye) << " | " << mrays(r.eyeOneByOne) << " | " << mrays(r.shadow) << " | "
+              << mrays(r.secondary) << " | " << mrays(r.shaded) << " | "
               << (r.renderSeconds ? (r.renderEstimated ? "~" : "") + fixed(*r.renderSeconds, 2)
                                   : std::string("-"))
               << " |\n";
@@ -119,10 +120,11 @@ void benchScenes(const BenchCommandOptions& o, int allThreads) {
         r.accel = kind;
         r.buildSeconds = b.buildSeconds;
         r.bytesPerPrim = bytesPerPrimitive(scene, *b.accel);
-        r.eye = measureQueries(*b.accel, rays.eye, false, threads, o.budget);
+        r.eye = measureEyeBundles(*b.accel, rays, threads, o.budget);
+        r.eyeOneByOne = measureQueries(*b.accel, rays.eye, false, threads, o.budget);
         r.shadow = measureQueries(*b.accel, rays.shadow, true, threads, o.budget);
         r.secondary = measureQueries(*b.accel, rays.secondary, false, threads, o.budget);
-        r.shaded = measureShaded(scene, *b.accel, rays.eye, o.depth, threads, o.budget);
+        r.shaded = measureShaded(scene, *b.accel, rays, o.depth, threads, o.budget);
         settings.threads = threads;
         if (!r.shaded.sampled) {
           const RenderTiming t = timeRender(scene, *b.accel, settings);
@@ -175,7 +177,8 @@ void benchScaling(const BenchCommandOptions& o) {
     data << "# generator primitives accel build_s bytes_per_prim eye_ns shadow_ns\n";
   }
   std::cout << "\nScaling: eye rays at " << o.size << " x " << o.size
-            << " and their shadow rays, intersection only, 1 thread\n\n"
+            << " (one by one: the hierarchy alone) and their shadow rays, intersection only, "
+               "1 thread\n\n"
             << "| scene | primitives | accel | build s | bytes/prim | eye ns/ray | shadow ns/ray "
                "|\n|---|---|---|---|---|---|---|\n";
   std::map<std::string, std::map<std::size_t, double>> bvhEye;

@@ -56,9 +56,9 @@ private:
 
 using Clock = std::chrono::steady_clock;
 
-// Runs work(i, worker) -> (rays traced, hit?) over queries [0, n) with the
-// given stride, on `threads` threads (worker 0 .. threads - 1), and returns
-// rays per second.
+// Runs work(i, worker) -> rays traced over work items [0, n) with the given
+// stride, on `threads` threads (worker 0 .. threads - 1), and returns rays per
+// second.
 template <class Work>
 Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& work) {
   Throughput result;
@@ -78,14 +78,11 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
   const std::size_t count = (n + stride - 1) / stride;
   constexpr std::size_t kChunk = 256;
   const int chunks = int((count + kChunk - 1) / kChunk);
-  std::vector<std::uint64_t> rays(std::size_t(threads), 0), hits(std::size_t(threads), 0);
+  std::vector<std::uint64_t> rays(std::size_t(threads), 0);
   auto chunk = [&](int c, int worker) {
     const std::size_t end = std::min(count, (std::size_t(c) + 1) * kChunk);
-    for (std::size_t k = std::size_t(c) * kChunk; k < end; ++k) {
-      const auto [r, h] = work(k * stride, worker);
-      rays[std::size_t(worker)] += r;
-      hits[std::size_t(worker)] += h ? 1 : 0;
-    }
+    for (std::size_t k = std::size_t(c) * kChunk; k < end; ++k)
+      rays[std::size_t(worker)] += work(k * stride, worker);
   };
   double seconds;
   if (threads == 1) {
@@ -98,13 +95,10 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
     parallelFor(chunks, threads, chunk);
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
   }
-  std::uint64_t totalRays = 0, totalHits = 0;
-  for (int w = 0; w < threads; ++w) {
-    totalRays += rays[std::size_t(w)];
-    totalHits += hits[std::size_t(w)];
-  }
+  std::uint64_t totalRays = 0;
+  for (std::uint64_t r : rays)
+    totalRays += r;
   result.raysPerSecond = seconds > 0.0 ? double(totalRays) / seconds : 0.0;
-  result.hitShare = double(totalHits) / double(count);
   return result;
 }
 
@@ -126,17 +120,22 @@ RaySet recordRays(const Scene& scene, const Accel& accel, int width, int height,
   Tracer tracer(scene, recorder, maxDepth, Tracer::BlockerCache::Off);
   RayCounts counts;
   rays.eye.reserve(std::size_t(width) * std::size_t(height));
-  // In the order the renderer traces them: tile by tile, rows within a tile.
+  // In the order and the bundles the renderer traces them: tile by tile, block
+  // by block of a tile, rows within a block.
   for (const Tile& tile : makeTiles(width, height, RenderSettings{}.tileSize)) {
-    for (int y = tile.y0; y < tile.y1; ++y) {
-      for (int x = tile.x0; x < tile.x1; ++x) {
-        const Ray ray = camera.eyeRay(x + 0.5, y + 0.5);
-        rays.eye.push_back({ray, Interval{}, {}, false});
-        recorder.nextIsEyeRay();
-        tracer.trace(ray, 1, counts);
+    for (const Tile& block : splitTile(tile, kBundleSide)) {
+      rays.eyeBundles.push_back(rays.eye.size());
+      for (int y = block.y0; y < block.y1; ++y) {
+        for (int x = block.x0; x < block.x1; ++x) {
+          const Ray ray = camera.eyeRay(x + 0.5, y + 0.5);
+          rays.eye.push_back({ray, Interval{}, {}, false});
+          recorder.nextIsEyeRay();
+          tracer.trace(ray, 1, counts);
+        }
       }
     }
   }
+  rays.eyeBundles.push_back(rays.eye.size());
   return rays;
 }
 
@@ -146,23 +145,51 @@ Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queri
     const RayQuery& q = queries[i];
     const PrimitiveRef* skip = q.hasSkip ? &q.skip : nullptr;
     Hit hit;
-    const bool found =
-        anyHit ? accel.anyHit(q.ray, q.range, skip) : accel.closestHit(q.ray, q.range, skip, hit);
-    return std::pair<std::uint64_t, bool>(1, found);
+    if (anyHit)
+      (void)accel.anyHit(q.ray, q.range, skip);
+    else
+      (void)accel.closestHit(q.ray, q.range, skip, hit);
+    return std::uint64_t(1);
   });
 }
 
-Throughput measureShaded(const Scene& scene, const Accel& accel, const std::vector<RayQuery>& eye,
-                         int maxDepth, int threads, double budgetSeconds) {
+namespace {
+
+// The eye rays of bundle k of `rays`.
+std::span<const Ray> eyeBundle(const RaySet& rays, std::vector<Ray>& storage, std::size_t k) {
+  storage.clear();
+  for (std::size_t i = rays.eyeBundles[k]; i < rays.eyeBundles[k + 1]; ++i)
+    storage.push_back(rays.eye[i].ray);
+  return storage;
+}
+
+} // namespace
+
+Throughput measureEyeBundles(const Accel& accel, const RaySet& rays, int threads,
+                             double budgetSeconds) {
+  std::vector<std::vector<Ray>> storage(static_cast<std::size_t>(threads));
+  return run(rays.eyeBundles.size() - 1, threads, budgetSeconds, [&](std::size_t k, int worker) {
+    const std::span<const Ray> bundle = eyeBundle(rays, storage[std::size_t(worker)], k);
+    Hit hits[Accel::kMaxBundle];
+    (void)accel.closestHits(bundle, std::span(hits, bundle.size()));
+    return std::uint64_t(bundle.size());
+  });
+}
+
+Throughput measureShaded(const Scene& scene, const Accel& accel, const RaySet& rays, int maxDepth,
+                         int threads, double budgetSeconds) {
   std::vector<Tracer> tracers; // one per worker thread
   tracers.reserve(std::size_t(threads));
   for (int w = 0; w < threads; ++w)
     tracers.emplace_back(scene, accel, maxDepth);
-  return run(eye.size(), threads, budgetSeconds, [&](std::size_t i, int worker) {
+  std::vector<std::vector<Ray>> storage(static_cast<std::size_t>(threads));
+  return run(rays.eyeBundles.size() - 1, threads, budgetSeconds, [&](std::size_t k, int worker) {
+    const std::span<const Ray> bundle = eyeBundle(rays, storage[std::size_t(worker)], k);
     RayCounts counts;
-    ++counts.eyePrimary;
-    const Color c = tracers[std::size_t(worker)].trace(eye[i].ray, 1, counts);
-    return std::pair<std::uint64_t, bool>(counts.total(), c != scene.background);
+    counts.eyePrimary += (long long)bundle.size();
+    Color colors[Accel::kMaxBundle];
+    tracers[std::size_t(worker)].traceBundle(bundle, std::span(colors, bundle.size()), counts);
+    return std::uint64_t(counts.total());
   });
 }
 

@@ -21,19 +21,21 @@ struct RayQuery {
 };
 
 // The rays of a scene at a given image size: eye rays through every pixel
-// centre, in the renderer's order (core/image_formation.h: tile by tile), and
-// the shadow and secondary (reflected and transmitted) queries the
-// tracer makes for them at `maxDepth`, at most `cap` of each kind.
+// centre, in the renderer's order and bundles (core/image_formation.h: tile by
+// tile, kBundleSide x kBundleSide block by block), and the shadow and
+// secondary (reflected and transmitted) queries the tracer makes for them at
+// `maxDepth`, at most `cap` of each kind.
 struct RaySet {
   std::vector<RayQuery> eye, shadow, secondary;
+  // Bundle k is eye[eyeBundles[k] .. eyeBundles[k + 1]).
+  std::vector<std::size_t> eyeBundles;
 };
 RaySet recordRays(const Scene& scene, const Accel& accel, int width, int height, int maxDepth,
                   std::size_t cap);
 
 struct Throughput {
   double raysPerSecond = 0.0;
-  double hitShare = 0.0; // of the queries measured
-  bool sampled = false;  // measured on a subset, to stay within the time budget
+  bool sampled = false; // measured on a subset, to stay within the time budget
 };
 
 // Intersection only: closestHit (or anyHit) for each query, on `threads`
@@ -42,10 +44,15 @@ struct Throughput {
 Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queries, bool anyHit,
                           int threads, double budgetSeconds);
 
-// With shading: Tracer::trace of every eye ray at `maxDepth`, counting every ray
-// traced (eye, shadow, reflected, transmitted).
-Throughput measureShaded(const Scene& scene, const Accel& accel, const std::vector<RayQuery>& eye,
-                         int maxDepth, int threads, double budgetSeconds);
+// Intersection only, as the renderer finds eye rays' hits: Accel::closestHits
+// of each bundle of eye rays.
+Throughput measureEyeBundles(const Accel& accel, const RaySet& rays, int threads,
+                             double budgetSeconds);
+
+// With shading: Tracer::traceBundle of every bundle of eye rays at `maxDepth`,
+// counting every ray traced (eye, shadow, reflected, transmitted).
+Throughput measureShaded(const Scene& scene, const Accel& accel, const RaySet& rays, int maxDepth,
+                         int threads, double budgetSeconds);
 
 struct RenderTiming {
   double wallSeconds = 0.0;

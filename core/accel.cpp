@@ -4,6 +4,8 @@
 #include "core/geometry.h"
 #include "core/group_bvh.h"
 
+#include <stdexcept>
+
 namespace prism {
 
 const char* accelKindName(AccelKind kind) {
@@ -22,6 +24,8 @@ const std::map<std::string, AccelKind>& accelKindsByName() {
 }
 
 std::uint64_t Accel::closestHits(std::span<const Ray> rays, std::span<Hit> hits) const {
+  if (rays.size() > kMaxBundle || hits.size() < rays.size())
+    throw std::length_error("closestHits: at most kMaxBundle rays, a hit for each");
   std::uint64_t found = 0;
   for (std::size_t i = 0; i < rays.size(); ++i)
     found |= std::uint64_t(closestHit(rays[i], Interval{}, nullptr, hits[i])) << i;

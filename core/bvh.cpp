@@ -433,8 +433,10 @@ bool walksTogether(std::span<const Ray> rays) {
     for (int a = 0; a < 3; ++a) {
       const bool sameOrigin = ray.origin[a] == rays[0].origin[a];
       const bool sameSign = (ray.dir[a] < 0.0) == (rays[0].dir[a] < 0.0);
-      // An infinite 1/d would make c * inv a NaN where c is 0.
-      if (!sameOrigin || !sameSign || !std::isfinite(1.0 / ray.dir[a])) return false;
+      // 1/d must be finite and not 0: otherwise c * inv is a NaN where c is 0
+      // (or infinite).
+      const double inv = 1.0 / ray.dir[a];
+      if (!sameOrigin || !sameSign || !std::isfinite(inv) || inv == 0.0) return false;
     }
   }
   return true;

@@ -1,5 +1,7 @@
 #include "core/tracer.h"
 
+#include <stdexcept>
+
 namespace prism {
 
 namespace {
@@ -61,6 +63,8 @@ Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* r
 }
 
 void Tracer::traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCounts& counts) {
+  if (rays.size() > Accel::kMaxBundle || out.size() < rays.size())
+    throw std::length_error("traceBundle: at most Accel::kMaxBundle rays, a colour for each");
   Hit hits[Accel::kMaxBundle];
   const std::uint64_t found = accel_.closestHits(rays, std::span(hits, rays.size()));
   for (std::size_t i = 0; i < rays.size(); ++i)

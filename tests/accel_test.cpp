@@ -409,6 +409,17 @@ TEST(Accel, BundlesOfRaysMatchBruteForce) {
   EXPECT_GT(together, 500); // most bundles took the shared walk
   EXPECT_GE(apart, 20);
   EXPECT_GT(hits, rays / 4);
+
+  // Directions that are not finite never walk together; more than a bundle
+  // holds is refused, not overrun.
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(
+      walksTogether(std::vector<Ray>{Ray{Vec3(0.0), {0, 0, -1}}, Ray{Vec3(0.0), {inf, 1, -1}}}));
+  const Scene scene = makeSphereflake(10);
+  const auto bvh = makeAccel(scene, AccelKind::Bvh);
+  const std::vector<Ray> tooMany(Accel::kMaxBundle + 1, Ray{Vec3(0, 0, 9), Vec3(0.01, 0.01, -1)});
+  std::vector<Hit> hitsOut(tooMany.size());
+  EXPECT_THROW((void)bvh->closestHits(tooMany, hitsOut), std::length_error);
 }
 
 TEST(Accel, DegenerateInputs) {

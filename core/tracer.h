@@ -37,9 +37,10 @@ public:
   Color trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* record = nullptr,
               const PrimitiveRef* skip = nullptr);
 
-  // trace(rays[i], 1, counts) for eye rays that share their origin (at most
-  // Accel::kMaxBundle), into out[i]: the same colours and counts, with the
-  // nearest hits found for the bundle at once (Accel::closestHits).
+  // trace(rays[i], 1, counts) for each of at most Accel::kMaxBundle eye rays,
+  // into out[i]: the same colours and counts, with the nearest hits found for
+  // the bundle at once (Accel::closestHits), which is faster when the rays
+  // share their origin and point roughly the same way.
   void traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCounts& counts);
 
   int maxDepth() const { return maxDepth_; }

@@ -323,6 +323,21 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
 // enter is entered, exactly as the one-ray test decides. The boxes of leaves
 // are then tested ray by ray with the one-ray test, and only the rays that
 // enter a leaf test its primitives, so every ray gets closestHit's answer.
+// Each waiting child carries the rays that may still enter it: where the
+// scene's boxes grow smaller than the gaps between the rays, the rays are
+// sorted out ray by ray there too, and the subtree is walked for those alone.
+namespace {
+
+// The largest extent of child c's box.
+double boxWidth(const Bvh::Node& node, int c) {
+  double width = 0.0;
+  for (int a = 0; a < 3; ++a)
+    width = std::max(width, double(node.bounds[2 * a + 1][c]) - double(node.bounds[2 * a][c]));
+  return width;
+}
+
+} // namespace
+
 std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const {
   const std::size_t count = rays.size();
   // Per ray, four at a time: 1/d on each axis and the end of the ray's range
@@ -346,14 +361,24 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
     nearRow[a] = 2 * a + (lo < 0.0 ? 1 : 0); // every ray has the sign of lo
     farRow[a] = 2 * a + (lo < 0.0 ? 0 : 1);
   }
+  // How far apart the rays are at distance t: about t * spread.
+  double spread = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    double lo = rays[0].dir[a], hi = lo;
+    for (std::size_t i = 1; i < count; ++i) {
+      lo = std::min(lo, rays[i].dir[a]);
+      hi = std::max(hi, rays[i].dir[a]);
+    }
+    spread = std::max(spread, hi - lo);
+  }
   std::fill(&rangeMax[0], &rangeMax[count], std::numeric_limits<double>::infinity());
   std::fill(&rangeMax[count], &rangeMax[kSlots], -std::numeric_limits<double>::infinity());
   std::uint64_t found = 0;
   double bundleMax = std::numeric_limits<double>::infinity(); // the largest rangeMax
 
-  // The rays (a bit mask) that enter child c of `node`: the one-ray test of
-  // NodeRay::enter, term for term, four rays at a time.
-  auto raysEntering = [&](const Node& node, int c) {
+  // The rays of `active` (a bit mask) that enter child c of `node`: the
+  // one-ray test of NodeRay::enter, term for term, four rays at a time.
+  auto raysEntering = [&](const Node& node, int c, std::uint64_t active) {
     double toNear[3], toFar[3];
     for (int a = 0; a < 3; ++a) {
       toNear[a] = double(node.bounds[nearRow[a]][c]) - origin[a];
@@ -361,6 +386,7 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
     }
     std::uint64_t entering = 0;
     for (std::size_t i = 0; i < count; i += 4) {
+      if ((active >> i & 0xf) == 0) continue;
       Lanes tNear = broadcast(0.0), tFar = load(&rangeMax[i]);
       for (int a = 0; a < 3; ++a) {
         const Lanes invA = load(&inv[a][i]);
@@ -369,16 +395,16 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
       }
       entering |= std::uint64_t(lessEqualMask(tNear, tFar)) << i;
     }
-    return entering;
+    return entering & active;
   };
 
   struct Entry {
     std::uint32_t ref;
     double t;           // where the bundle may first enter the child's box
-    std::uint64_t rays; // for a leaf: the rays that enter its box
+    std::uint64_t rays; // the rays that may enter it (for a leaf: that do)
   };
   TraversalStack<Entry> stack(depth_);
-  Entry current{0, 0.0, 0};
+  Entry current{0, 0.0, count == kMaxBundle ? ~std::uint64_t(0) : (std::uint64_t(1) << count) - 1};
   for (;;) {
     if ((current.ref & kLeafBit) == 0) {
       const Node& node = nodes_[current.ref];
@@ -396,9 +422,17 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
       int n = 0;
       for (int c = 0; c < 4; ++c) {
         if ((mask >> c & 1u) == 0) continue;
-        std::uint64_t entering = 0;
-        if ((node.child[c] & kLeafBit) != 0 && (entering = raysEntering(node, c)) == 0) continue;
-        next[n++] = {node.child[c], tEnter[c], entering};
+        // A leaf's rays are found ray by ray; so are those of a box narrower
+        // than the bundle where the bundle meets it, which most rays miss
+        // (a wider box keeps its parent's rays, unchecked, as the test of
+        // every ray there would cost more than it saves).
+        std::uint64_t active = current.rays;
+        const bool leaf = (node.child[c] & kLeafBit) != 0;
+        if (leaf || boxWidth(node, c) < spread * tEnter[c]) {
+          active = raysEntering(node, c, active);
+          if (active == 0) continue;
+        }
+        next[n++] = {node.child[c], tEnter[c], active};
       }
       if (n > 0) {
         current = stack.pushAllButNearest(next, n);

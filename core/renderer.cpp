@@ -30,11 +30,15 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
     progress({pass, 0.5 * double(tilesDone) / double(tileCount) + (pass == 2 ? 0.5 : 0.0)});
   };
 
-  // A Tracer per tile: it belongs to one thread (see core/tracer.h).
+  // A Tracer per tile: it belongs to one thread (see core/tracer.h). A tile
+  // counts its rays in counts of its own, added to its worker's at the end:
+  // the workers' counts sit side by side in memory, and incrementing them ray
+  // by ray from two cores would bounce their cache line between the cores.
   parallelFor(tileCount, threads, [&](int i, int worker) {
     Tracer tracer(scene, accel, settings.maxDepth);
-    tracePixelCentres(tracer, camera, tiles[std::size_t(i)], result.film,
-                      counts[std::size_t(worker)]);
+    RayCounts tileCounts;
+    tracePixelCentres(tracer, camera, tiles[std::size_t(i)], result.film, tileCounts);
+    counts[std::size_t(worker)] += tileCounts;
     reportTile(1);
   });
   result.avgmax = averageMax(result.film.centre);
@@ -42,9 +46,11 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
   tilesDone = 0;
   parallelFor(tileCount, threads, [&](int i, int worker) {
     Tracer tracer(scene, accel, settings.maxDepth);
+    RayCounts tileCounts;
     supersampled[std::size_t(i)] =
         antialiasTile(tracer, camera, tiles[std::size_t(i)], result.avgmax, settings.thresh,
-                      settings.jitter, result.film, counts[std::size_t(worker)]);
+                      settings.jitter, result.film, tileCounts);
+    counts[std::size_t(worker)] += tileCounts;
     reportTile(2);
   });
 

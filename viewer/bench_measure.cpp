@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <optional>
+#include <span>
 
 namespace prism {
 
@@ -57,10 +59,11 @@ private:
 using Clock = std::chrono::steady_clock;
 
 // Runs work(i, worker) -> rays traced over work items [0, n) with the given
-// stride, on `threads` threads (worker 0 .. threads - 1), and returns rays per
-// second.
+// stride, on `threads` threads (worker 0 .. threads - 1), handing out
+// `chunk` items at a time, and returns rays per second.
 template <class Work>
-Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& work) {
+Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& work,
+               std::size_t itemsPerChunk = 256) {
   Throughput result;
   if (n == 0) return result;
   // A probe of up to 64 queries spread over the set estimates the whole cost.
@@ -76,13 +79,16 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
     result.sampled = true;
   }
   const std::size_t count = (n + stride - 1) / stride;
-  constexpr std::size_t kChunk = 256;
+  const std::size_t kChunk = itemsPerChunk;
   const int chunks = int((count + kChunk - 1) / kChunk);
   std::vector<std::uint64_t> rays(std::size_t(threads), 0);
   auto chunk = [&](int c, int worker) {
     const std::size_t end = std::min(count, (std::size_t(c) + 1) * kChunk);
+    // Summed locally: the workers' totals share a cache line.
+    std::uint64_t traced = 0;
     for (std::size_t k = std::size_t(c) * kChunk; k < end; ++k)
-      rays[std::size_t(worker)] += work(k * stride, worker);
+      traced += work(k * stride, worker);
+    rays[std::size_t(worker)] += traced;
   };
   double seconds;
   if (threads == 1) {
@@ -155,42 +161,56 @@ Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queri
 
 namespace {
 
-// The eye rays of bundle k of `rays`.
-std::span<const Ray> eyeBundle(const RaySet& rays, std::vector<Ray>& storage, std::size_t k) {
-  storage.clear();
-  for (std::size_t i = rays.eyeBundles[k]; i < rays.eyeBundles[k + 1]; ++i)
-    storage.push_back(rays.eye[i].ray);
-  return storage;
+// The eye rays side by side, so a bundle is a span of them.
+std::vector<Ray> eyeRays(const RaySet& rays) {
+  std::vector<Ray> out;
+  out.reserve(rays.eye.size());
+  for (const RayQuery& q : rays.eye)
+    out.push_back(q.ray);
+  return out;
 }
+
+std::span<const Ray> eyeBundle(const RaySet& rays, const std::vector<Ray>& eye, std::size_t k) {
+  return std::span(eye).subspan(rays.eyeBundles[k], rays.eyeBundles[k + 1] - rays.eyeBundles[k]);
+}
+
+// Work items of 64 rays: a few per chunk, so two threads share the work evenly.
+constexpr std::size_t kBundlesPerChunk = 4;
 
 } // namespace
 
 Throughput measureEyeBundles(const Accel& accel, const RaySet& rays, int threads,
                              double budgetSeconds) {
-  std::vector<std::vector<Ray>> storage(static_cast<std::size_t>(threads));
-  return run(rays.eyeBundles.size() - 1, threads, budgetSeconds, [&](std::size_t k, int worker) {
-    const std::span<const Ray> bundle = eyeBundle(rays, storage[std::size_t(worker)], k);
-    Hit hits[Accel::kMaxBundle];
-    (void)accel.closestHits(bundle, std::span(hits, bundle.size()));
-    return std::uint64_t(bundle.size());
-  });
+  const std::vector<Ray> eye = eyeRays(rays);
+  return run(
+      rays.eyeBundles.size() - 1, threads, budgetSeconds,
+      [&](std::size_t k, int) {
+        const std::span<const Ray> bundle = eyeBundle(rays, eye, k);
+        Hit hits[Accel::kMaxBundle];
+        (void)accel.closestHits(bundle, std::span(hits, bundle.size()));
+        return std::uint64_t(bundle.size());
+      },
+      kBundlesPerChunk);
 }
 
 Throughput measureShaded(const Scene& scene, const Accel& accel, const RaySet& rays, int maxDepth,
                          int threads, double budgetSeconds) {
-  std::vector<Tracer> tracers; // one per worker thread
-  tracers.reserve(std::size_t(threads));
-  for (int w = 0; w < threads; ++w)
-    tracers.emplace_back(scene, accel, maxDepth);
-  std::vector<std::vector<Ray>> storage(static_cast<std::size_t>(threads));
-  return run(rays.eyeBundles.size() - 1, threads, budgetSeconds, [&](std::size_t k, int worker) {
-    const std::span<const Ray> bundle = eyeBundle(rays, storage[std::size_t(worker)], k);
-    RayCounts counts;
-    counts.eyePrimary += (long long)bundle.size();
-    Color colors[Accel::kMaxBundle];
-    tracers[std::size_t(worker)].traceBundle(bundle, std::span(colors, bundle.size()), counts);
-    return std::uint64_t(counts.total());
-  });
+  const std::vector<Ray> eye = eyeRays(rays);
+  // One tracer per worker, made on its own thread, as the renderer makes them.
+  std::vector<std::optional<Tracer>> tracers(static_cast<std::size_t>(threads));
+  return run(
+      rays.eyeBundles.size() - 1, threads, budgetSeconds,
+      [&](std::size_t k, int worker) {
+        std::optional<Tracer>& tracer = tracers[std::size_t(worker)];
+        if (!tracer) tracer.emplace(scene, accel, maxDepth);
+        const std::span<const Ray> bundle = eyeBundle(rays, eye, k);
+        RayCounts counts;
+        counts.eyePrimary += (long long)bundle.size();
+        Color colors[Accel::kMaxBundle];
+        tracer->traceBundle(bundle, std::span(colors, bundle.size()), counts);
+        return std::uint64_t(counts.total());
+      },
+      kBundlesPerChunk);
 }
 
 RenderTiming timeRender(const Scene& scene, const Accel& accel, const RenderSettings& settings) {

@@ -60,7 +60,11 @@ using Clock = std::chrono::steady_clock;
 
 // Runs work(i, worker) -> rays traced over work items [0, n) with the given
 // stride, on `threads` threads (worker 0 .. threads - 1), handing out
-// `chunk` items at a time, and returns rays per second.
+// `chunk` items at a time, and returns rays per second. A set that takes less
+// than kMinSeconds (or the budget, if smaller) is run again until it has:
+// figures of a few milliseconds move too much from run to run.
+constexpr double kMinSeconds = 0.25;
+constexpr int kMaxPasses = 64;
 template <class Work>
 Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& work,
                std::size_t itemsPerChunk = 256) {
@@ -90,16 +94,19 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
       traced += work(k * stride, worker);
     rays[std::size_t(worker)] += traced;
   };
-  double seconds;
-  if (threads == 1) {
-    const double start = threadCpuSeconds();
-    for (int c = 0; c < chunks; ++c)
-      chunk(c, 0);
-    seconds = threadCpuSeconds() - start;
-  } else {
-    const auto start = Clock::now();
-    parallelFor(chunks, threads, chunk);
-    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const double minSeconds = std::min(kMinSeconds, budgetSeconds);
+  double seconds = 0.0;
+  for (int pass = 0; pass < kMaxPasses && seconds < minSeconds; ++pass) {
+    if (threads == 1) {
+      const double start = threadCpuSeconds();
+      for (int c = 0; c < chunks; ++c)
+        chunk(c, 0);
+      seconds += threadCpuSeconds() - start;
+    } else {
+      const auto start = Clock::now();
+      parallelFor(chunks, threads, chunk);
+      seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    }
   }
   std::uint64_t totalRays = 0;
   for (std::uint64_t r : rays)

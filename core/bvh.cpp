@@ -347,6 +347,8 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
   const double* origin = &rays[0].origin[0];
   Lanes bundleOrigin[3], invLo[3], invHi[3];
   int nearRow[3], farRow[3];
+  // How far apart the rays are at distance t: about t * spread.
+  double spread = 0.0;
   for (int a = 0; a < 3; ++a) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < count; ++i) {
@@ -360,16 +362,8 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
     invHi[a] = broadcast(hi);
     nearRow[a] = 2 * a + (lo < 0.0 ? 1 : 0); // every ray has the sign of lo
     farRow[a] = 2 * a + (lo < 0.0 ? 0 : 1);
-  }
-  // How far apart the rays are at distance t: about t * spread.
-  double spread = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    double lo = rays[0].dir[a], hi = lo;
-    for (std::size_t i = 1; i < count; ++i) {
-      lo = std::min(lo, rays[i].dir[a]);
-      hi = std::max(hi, rays[i].dir[a]);
-    }
-    spread = std::max(spread, hi - lo);
+    // 1/d is monotonic on d's sign: the directions' range is 1/hi .. 1/lo.
+    spread = std::max(spread, std::abs(1.0 / lo - 1.0 / hi));
   }
   std::fill(&rangeMax[0], &rangeMax[count], std::numeric_limits<double>::infinity());
   std::fill(&rangeMax[count], &rangeMax[kSlots], -std::numeric_limits<double>::infinity());
@@ -467,10 +461,12 @@ bool walksTogether(std::span<const Ray> rays) {
     for (int a = 0; a < 3; ++a) {
       const bool sameOrigin = ray.origin[a] == rays[0].origin[a];
       const bool sameSign = (ray.dir[a] < 0.0) == (rays[0].dir[a] < 0.0);
-      // 1/d must be finite and not 0: otherwise c * inv is a NaN where c is 0
-      // (or infinite).
-      const double inv = 1.0 / ray.dir[a];
-      if (!sameOrigin || !sameSign || !std::isfinite(inv) || inv == 0.0) return false;
+      // 1/d must be finite and not 0, or c * inv is a NaN where c is 0 (or
+      // infinite): d finite and at least the smallest normal double (a
+      // subnormal d, possibly fine, goes ray by ray too).
+      const double d = std::abs(ray.dir[a]);
+      if (!sameOrigin || !sameSign || !(d >= std::numeric_limits<double>::min()) || std::isinf(d))
+        return false;
     }
   }
   return true;

@@ -115,6 +115,22 @@ Throughput run(std::size_t n, int threads, double budgetSeconds, const Work& wor
   return result;
 }
 
+// The eye rays side by side, so a bundle is a span of them.
+std::vector<Ray> eyeRays(const RaySet& rays) {
+  std::vector<Ray> out;
+  out.reserve(rays.eye.size());
+  for (const RayQuery& q : rays.eye)
+    out.push_back(q.ray);
+  return out;
+}
+
+std::span<const Ray> eyeBundle(const RaySet& rays, const std::vector<Ray>& eye, std::size_t k) {
+  return std::span(eye).subspan(rays.eyeBundles[k], rays.eyeBundles[k + 1] - rays.eyeBundles[k]);
+}
+
+// Work items of 64 rays: a few per chunk, so two threads share the work evenly.
+constexpr std::size_t kBundlesPerChunk = 4;
+
 } // namespace
 
 double threadCpuSeconds() {
@@ -165,26 +181,6 @@ Throughput measureQueries(const Accel& accel, const std::vector<RayQuery>& queri
     return std::uint64_t(1);
   });
 }
-
-namespace {
-
-// The eye rays side by side, so a bundle is a span of them.
-std::vector<Ray> eyeRays(const RaySet& rays) {
-  std::vector<Ray> out;
-  out.reserve(rays.eye.size());
-  for (const RayQuery& q : rays.eye)
-    out.push_back(q.ray);
-  return out;
-}
-
-std::span<const Ray> eyeBundle(const RaySet& rays, const std::vector<Ray>& eye, std::size_t k) {
-  return std::span(eye).subspan(rays.eyeBundles[k], rays.eyeBundles[k + 1] - rays.eyeBundles[k]);
-}
-
-// Work items of 64 rays: a few per chunk, so two threads share the work evenly.
-constexpr std::size_t kBundlesPerChunk = 4;
-
-} // namespace
 
 Throughput measureEyeBundles(const Accel& accel, const RaySet& rays, int threads,
                              double budgetSeconds) {

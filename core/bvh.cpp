@@ -265,7 +265,7 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
 
 template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
-  if (nodes_.empty()) return false;
+  if (nodes_.empty() || !isFinite(ray)) return false;
   const NodeRay nodeRay(ray);
 
   struct Entry {
@@ -463,9 +463,11 @@ bool walksTogether(std::span<const Ray> rays) {
       const bool sameSign = (ray.dir[a] < 0.0) == (rays[0].dir[a] < 0.0);
       // 1/d must be finite and not 0, or c * inv is a NaN where c is 0 (or
       // infinite): d finite and at least the smallest normal double (a
-      // subnormal d, possibly fine, goes ray by ray too).
+      // subnormal d, possibly fine, goes ray by ray too). A non-finite origin
+      // goes ray by ray, where it hits nothing.
       const double d = std::abs(ray.dir[a]);
-      if (!sameOrigin || !sameSign || !(d >= std::numeric_limits<double>::min()) || std::isinf(d))
+      if (!sameOrigin || !sameSign || !(d >= std::numeric_limits<double>::min()) ||
+          std::isinf(d) || !std::isfinite(ray.origin[a]))
         return false;
     }
   }

@@ -1,12 +1,17 @@
 #include "core/exposure.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace prism {
 
 float exposureScale(double avgmax) {
   if (!(avgmax > 0.0) || !std::isfinite(avgmax)) return 0.0f;
-  return float(128.0 / avgmax);
+  // Below avgmax = 128 / 3.4e38 the scale is not a float: such a picture is
+  // exposed with the largest float scale (darker than the model asks) rather
+  // than with an infinite one, which would turn a black pixel into NaN.
+  return float(std::min(128.0 / avgmax, double(std::numeric_limits<float>::max())));
 }
 
 std::uint8_t exposeChannel(float radiance, float scale) {

@@ -8,13 +8,23 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace prism {
 
 using Rgb = glm::vec3; // float RGB radiance, as SPEC 2 keeps it per pixel
 
-inline Rgb toRgb(const Color& c) { return Rgb(float(c.r), float(c.g), float(c.b)); }
+// Radiance beyond the largest float (3.4e38) is stored as the largest float,
+// so the film never holds an infinity: avgmax and the exposure stay finite
+// and such a pixel exposes to 255 (or, if all of them saturate, to 128). A NaN
+// (which the tracer never produces) would be stored as 0, never shown.
+inline float toFilm(double x) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  return x < kMax ? float(x) : (x >= kMax ? float(kMax) : 0.0f);
+}
+
+inline Rgb toRgb(const Color& c) { return Rgb(toFilm(c.r), toFilm(c.g), toFilm(c.b)); }
 
 struct Film {
   Film() = default;

@@ -109,6 +109,7 @@ std::uint32_t GroupBvh::buildGroup(std::uint32_t groupIndex) {
 
 template <bool AnyHit>
 bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
+  if (!isFinite(ray)) return false;
   const Vec3 invDir = 1.0 / ray.dir;
   std::uint32_t local[kLocalStack];
   std::vector<std::uint32_t> heap; // only for pathologically deep nesting

@@ -14,6 +14,7 @@
 
 #include "core/geometry.h"
 #include "core/import_common.h"
+#include "core/model_range.h"
 #include "core/scene_text.h"
 #include "core/triangulate.h"
 
@@ -111,6 +112,7 @@ private:
   struct RawLight {
     Vec3 position;
     Color color;
+    Token keyword;
   };
   std::vector<RawLight> lights_;
 };
@@ -245,6 +247,11 @@ void NffReader::view(const Token& keyword) {
     if (which <= 2) {
       Arg a[3];
       if (!numbers(kWords[which], {"X", "Y", "Z"}, a, valid) || !valid) continue;
+      if (which <= 1 && !withinModelRange(vec(a))) {
+        report(a[0].token, std::string(kWords[which]) + ": the point must be within +-" +
+                               kMaxCoordinateText);
+        continue;
+      }
       (which == 0 ? camera.eye : which == 1 ? camera.lookat : camera.up) = vec(a);
     } else if (which == 3) {
       Arg a;
@@ -302,7 +309,6 @@ void NffReader::background(const Token& keyword) {
 
 // l X Y Z [R G B]: the colour is optional (white without it).
 void NffReader::light(const Token& keyword) {
-  (void)keyword;
   bool valid = true;
   Arg position[3];
   if (!numbers("l", {"X", "Y", "Z"}, position, valid)) return;
@@ -315,7 +321,11 @@ void NffReader::light(const Token& keyword) {
       nonNegative("l", rgb[i], kNames[i], valid);
     color = vec(rgb);
   }
-  if (valid) lights_.push_back({vec(position), color});
+  if (valid && !withinModelRange(vec(position))) {
+    report(keyword, outsideModelRangeMessage("l"));
+    return;
+  }
+  if (valid) lights_.push_back({vec(position), color, keyword});
 }
 
 // f R G B Kd Ks Shine T ior: the same model as Prism's surface, argument for
@@ -367,6 +377,10 @@ void NffReader::cone(const Token& keyword) {
     return;
   }
   Cone c = makeCone(vec(a), rb, vec(a + 4), ra);
+  if (!withinModelRange(c.bounds)) {
+    report(keyword, outsideModelRangeMessage("c"));
+    return;
+  }
   c.material = material();
   c.origin = origin(keyword);
   scene_.cones.push_back(c);
@@ -382,7 +396,12 @@ void NffReader::sphere(const Token& keyword) {
     report(a[3].token, "s: RADIUS must be positive, found " + quoted(a[3].token.text));
     return;
   }
-  scene_.spheres.push_back({vec(a), a[3].value, material(), origin(keyword)});
+  const Sphere sphere{vec(a), a[3].value, material(), origin(keyword)};
+  if (!withinModelRange(boundsOf(sphere))) {
+    report(keyword, outsideModelRangeMessage("s"));
+    return;
+  }
+  scene_.spheres.push_back(sphere);
   scene_.groups[0].primitives.push_back(
       {PrimitiveKind::Sphere, std::uint32_t(scene_.spheres.size() - 1)});
 }
@@ -445,6 +464,12 @@ void NffReader::polygon(const Token& keyword, bool patch) {
     }
   }
   if (!valid) return;
+  for (const Vec3& point : points) {
+    if (!withinModelRange(point)) {
+      report(keyword, outsideModelRangeMessage(name));
+      return;
+    }
+  }
   if (!patch) {
     if (const std::optional<std::string> problem = polygonProblem(points)) {
       if (problem->starts_with("degenerate")) {
@@ -518,7 +543,13 @@ void NffReader::finish() {
   const double floor = 1e-3 * glm::length(direction);
   for (const RawLight& l : lights_) {
     const double distance = std::max(glm::length(l.position - camera.lookat), floor);
-    scene_.lights.push_back({l.position, falloffCompensated(l.color, distance)});
+    const Color intensity = falloffCompensated(l.color, distance);
+    if (!isFinite(intensity)) {
+      report(l.keyword, "l: the colour times the squared distance to the view's 'at' point (the "
+                        "1/r^2 compensation) is too large for a double");
+      continue;
+    }
+    scene_.lights.push_back({l.position, intensity});
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/cone.h"
 #include "core/geometry.h"
+#include "core/model_range.h"
 #include "core/scene_text.h"
 #include "core/transform.h"
 #include "core/triangle.h"
@@ -209,10 +210,10 @@ private:
   bool once(Command& c);
 
   // Commands.
-  void eye(Command& c) { cameraPoint(c, scene_.camera.eye); }
-  void lookat(Command& c) { cameraPoint(c, scene_.camera.lookat); }
-  void up(Command& c) { cameraPoint(c, scene_.camera.up); }
-  void cameraPoint(Command& c, Vec3& target);
+  void eye(Command& c) { cameraPoint(c, scene_.camera.eye, true); }
+  void lookat(Command& c) { cameraPoint(c, scene_.camera.lookat, true); }
+  void up(Command& c) { cameraPoint(c, scene_.camera.up, false); }
+  void cameraPoint(Command& c, Vec3& target, bool isPoint);
   void fov(Command& c);
   void resolution(Command& c);
   void background(Command& c) { globalColor(c, scene_.background); }
@@ -441,12 +442,15 @@ bool Parser::once(Command& c) {
 // ---------------------------------------------------------------------------
 // Camera and global commands
 
-void Parser::cameraPoint(Command& c, Vec3& target) {
+void Parser::cameraPoint(Command& c, Vec3& target, bool isPoint) {
   const bool first = once(c);
   Arg a[3];
   if (!numbers(c, {"X", "Y", "Z"}, a)) {
     cameraBroken_ = cameraBroken_ || first;
     return;
+  }
+  if (c.valid && isPoint && !withinModelRange(vec(a))) {
+    invalid(c, a[0].token, std::string("the point must be within +-") + kMaxCoordinateText);
   }
   if (c.valid) target = vec(a);
   if (first && !c.valid) cameraBroken_ = true;
@@ -500,8 +504,8 @@ void Parser::light(Command& c) {
   requireColor(c, a + 3);
   if (!c.valid) return;
   const Vec3 position = transform_.point(vec(a));
-  if (!isFinite(position)) {
-    error(c.keyword, "light: the position is not finite after the current transform");
+  if (!withinModelRange(position)) {
+    error(c.keyword, outsideModelRangeMessage("light"));
     return;
   }
   scene_.lights.push_back({position, vec(a + 3)});
@@ -551,19 +555,32 @@ void Parser::sphere(Command& c) {
   double s = 1.0;
   if (transform_.isSimilarity(&s)) {
     const double radius = r.value * s;
-    if (!isFinite(center) || !std::isfinite(radius) || !(radius > 0.0)) {
-      error(c.keyword, "sphere: too large or too small after the current transform");
+    if (!(radius > 0.0)) {
+      error(c.keyword, "sphere: too small after the current transform");
       return;
     }
-    scene_.spheres.push_back({center, radius, currentMaterial(), origin(c)});
+    const Sphere sphere{center, radius, currentMaterial(), origin(c)};
+    if (!withinModelRange(boundsOf(sphere))) {
+      error(c.keyword, outsideModelRangeMessage("sphere"));
+      return;
+    }
+    scene_.spheres.push_back(sphere);
     addPrimitive(PrimitiveKind::Sphere, scene_.spheres.size() - 1);
     return;
   }
   // A non-uniform scale makes it the image of the unit sphere under x -> L (r x) + center.
-  Ellipsoid e = makeEllipsoid(transform_.linear() * r.value, center);
-  if (!isFinite(center) || !allFinite(e.worldToObject) || !isFinite(e.bounds.lo) ||
-      !isFinite(e.bounds.hi)) {
-    error(c.keyword, "sphere: too large or too small after the current transform");
+  const Mat3 linear = transform_.linear() * r.value;
+  if (!allFinite(linear)) {
+    error(c.keyword, outsideModelRangeMessage("sphere"));
+    return;
+  }
+  Ellipsoid e = makeEllipsoid(linear, center);
+  if (!allFinite(e.worldToObject)) {
+    error(c.keyword, "sphere: too small after the current transform");
+    return;
+  }
+  if (!withinModelRange(e.bounds)) {
+    error(c.keyword, outsideModelRangeMessage("sphere"));
     return;
   }
   e.material = currentMaterial();
@@ -618,6 +635,12 @@ void Parser::polygon(Command& c) {
   // A mirroring transform would turn the counterclockwise order, and with it the
   // outward normal, inside out.
   if (mirrors(transform_)) std::reverse(vertices_.begin(), vertices_.end());
+  for (const Vec3& v : vertices_) {
+    if (!withinModelRange(v)) {
+      error(c.keyword, outsideModelRangeMessage("polygon"));
+      return;
+    }
+  }
   if (const std::optional<std::string> problem = polygonProblem(vertices_)) {
     error(c.keyword, "polygon: " + *problem);
     return;
@@ -646,9 +669,12 @@ void Parser::cone(Command& c) {
   }
   Cone cone = makeCone(base, a[3].value, apex, a[7].value, transform_.linear(),
                        transform_.point(Vec3(0.0)));
-  if (!allFinite(cone.worldToObject) || !isFinite(cone.worldToObjectOffset) ||
-      !isFinite(cone.bounds.lo) || !isFinite(cone.bounds.hi)) {
+  if (!allFinite(cone.worldToObject) || !isFinite(cone.worldToObjectOffset)) {
     error(c.keyword, "cone: too large or too small after the current transform");
+    return;
+  }
+  if (!withinModelRange(cone.bounds)) {
+    error(c.keyword, outsideModelRangeMessage("cone"));
     return;
   }
   cone.material = currentMaterial();
@@ -690,6 +716,10 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
   std::array<Vec3, 3> n;
   for (int i = 0; i < 3; ++i) {
     v[i] = transform_.point(v[i]);
+    if (!withinModelRange(v[i])) {
+      error(c.keyword, outsideModelRangeMessage(c.name));
+      return;
+    }
     if (normals != nullptr) {
       // Normals move by the inverse transpose; scaled before normalising so
       // that a tiny or huge one cannot under- or overflow.

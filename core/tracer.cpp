@@ -1,5 +1,6 @@
 #include "core/tracer.h"
 
+#include <limits>
 #include <stdexcept>
 
 namespace prism {
@@ -32,10 +33,22 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
   // At the critical angle the refracted ray would run along the surface; k is 0
   // only up to round-off there, so a margin makes the critical angle itself
   // reflect totally whichever way the rounding goes (it grazes within 1e-6 rad).
-  if (k <= kGrazingCos2) return false;
+  // Written so that a NaN k is total reflection too: with an index so large
+  // that eta * eta overflows, inf * 0 is NaN at normal incidence, and the
+  // critical angle of such an index is far below what a double resolves.
+  if (!(k > kGrazingCos2)) return false;
   out = glm::normalize(eta * d + (eta * cosIn - std::sqrt(k)) * n);
   return true;
 }
+
+// Radiance is never limited, but a double can overflow: a light of intensity
+// 1e308 at distance 0.1, or a chain of mirrors with ksr > 1. Infinity is fine
+// in a sum of non-negative terms; only infinity times zero (a material with
+// kdr = 0 under that light) would make a NaN. So every value that may have
+// overflowed is pegged at the largest double before it is multiplied by a
+// coefficient that may be zero. The film then stores the largest float (see
+// toRgb). For every finite radiance this changes nothing.
+Color saturated(const Color& c) { return glm::min(c, Color(std::numeric_limits<double>::max())); }
 
 bool isFlat(PrimitiveRef ref) {
   return ref.kind == PrimitiveKind::Polygon || ref.kind == PrimitiveKind::Triangle;
@@ -162,8 +175,8 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
     if (record != nullptr) record->lights.push_back(term);
   }
 
-  const Color ambientDiffuse = m.color * m.kdr * (scene_.ambient + diffuse);
-  const Color highlight = m.ksr * specular;
+  const Color ambientDiffuse = saturated(m.color * m.kdr) * saturated(scene_.ambient + diffuse);
+  const Color highlight = m.ksr * saturated(specular);
   Color reflected(0.0), transmitted(0.0);
   bool tir = false;
   RayTreeNode* reflectedRecord = nullptr;

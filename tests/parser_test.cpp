@@ -716,9 +716,38 @@ TEST(ParserErrors, ScaleAndRotate) {
             "t.sc:2:1: error: scale: the current transform would become degenerate (too large or "
             "too small)");
   EXPECT_EQ(sceneErrorsOf("scale 1e300 1 1\nlight 1e300 0 0 1 1 1\n"),
-            "t.sc:2:1: error: light: the position is not finite after the current transform");
+            "t.sc:2:1: error: light: lies outside the supported range: world coordinates (after "
+            "the current transform) must be within +-1e30");
   EXPECT_EQ(sceneErrorsOf("scale 1e300 1e300 1e300\nsphere 0 0 0 1e300\n"),
-            "t.sc:2:1: error: sphere: too large or too small after the current transform");
+            "t.sc:2:1: error: sphere: lies outside the supported range: world coordinates (after "
+            "the current transform) must be within +-1e30");
+  EXPECT_EQ(sceneErrorsOf("scale 1e-300 1e-300 1e-300\nsphere 0 0 0 1e-300\n"),
+            "t.sc:2:1: error: sphere: too small after the current transform");
+}
+
+// Squares of distances must not overflow (a sphere of radius 1e155 was never
+// hit, an eye at 1e300 had "no view direction"): world coordinates are kept
+// within +-1e30, the limit checked after every transform, and exactly at it.
+TEST(ParserErrors, WorldCoordinatesBeyondTheSupportedRange) {
+  const std::string outside = ": lies outside the supported range: world coordinates (after the "
+                              "current transform) must be within +-1e30";
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1e155"), "t.sc:1:1: error: sphere" + outside);
+  EXPECT_EQ(sceneErrorsOf("sphere 1e30 0 0 1e15"), "t.sc:1:1: error: sphere" + outside);
+  EXPECT_EQ(parse("sphere 0 0 0 1e30").spheres.at(0).radius, 1e30); // the limit itself
+  EXPECT_EQ(sceneErrorsOf("scale 1e20 1e20 1e20\nscale 1e20 1 1 sphere 0 0 0 1"),
+            "t.sc:2:16: error: sphere" + outside);
+  EXPECT_EQ(sceneErrorsOf("scale 1e29 1 1 sphere 0 0 0 20"), "t.sc:1:16: error: sphere" + outside);
+  EXPECT_EQ(sceneErrorsOf("polygon 3 0 0 0 2e30 0 0 0 1 0"), "t.sc:1:1: error: polygon" + outside);
+  EXPECT_EQ(sceneErrorsOf("translate 0 0 -1e30 triangle 0 0 -1e25 1 0 0 0 1 0"),
+            "t.sc:1:21: error: triangle" + outside);
+  EXPECT_EQ(sceneErrorsOf("cone 0 0 0 1e31 0 0 1 0"), "t.sc:1:1: error: cone" + outside);
+  EXPECT_EQ(sceneErrorsOf("light 0 0 -2e30 1 1 1"), "t.sc:1:1: error: light" + outside);
+  EXPECT_EQ(sceneErrorsOf("eye 1e300 0 0"),
+            "t.sc:1:5: error: eye: the point must be within +-1e30");
+  EXPECT_EQ(sceneErrorsOf("lookat 0 0 -1e31"),
+            "t.sc:1:8: error: lookat: the point must be within +-1e30");
+  // `up` is a direction: any length will do.
+  EXPECT_EQ(parse("up 0 1e300 0 sphere 0 0 0 1").camera.up, Vec3(0, 1e300, 0));
 }
 
 TEST(ParserErrors, PolygonVertexCount) {

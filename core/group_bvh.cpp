@@ -15,7 +15,7 @@ int longestAxis(const Vec3& extent) {
 } // namespace
 
 GroupBvh::GroupBvh(const Scene& scene) : scene_(scene) {
-  root_ = buildGroup(0);
+  root_ = buildGroups();
   // A node's children wait on the stack while its last child is explored first;
   // nodes are stored after their children, so one forward sweep sizes the stack.
   std::vector<std::size_t> need(nodes_.size(), 1);
@@ -68,14 +68,38 @@ std::uint32_t GroupBvh::buildSplit(std::vector<std::pair<T, Aabb>>& items, std::
   return addNode({left, right}, {});
 }
 
-std::uint32_t GroupBvh::buildGroup(std::uint32_t groupIndex) {
-  const Group& group = scene_.groups[groupIndex];
-  std::vector<std::uint32_t> children;
-  for (std::uint32_t child : group.children) {
-    const Group& g = scene_.groups[child];
-    if (g.primitives.empty() && g.children.empty()) continue;
-    children.push_back(buildGroup(child));
+// Every group's node is made after its sub-groups' nodes (the order a
+// recursive build would give), with an explicit stack: push/pop may nest as
+// deep as the reader allows, far deeper than the machine stack.
+std::uint32_t GroupBvh::buildGroups() {
+  struct Pending {
+    std::uint32_t group;
+    std::size_t nextChild = 0;
+    std::vector<std::uint32_t> childNodes; // nodes of the sub-groups built so far
+  };
+  std::vector<Pending> stack;
+  stack.push_back({0, 0, {}});
+  for (;;) {
+    Pending& top = stack.back();
+    const Group& group = scene_.groups[top.group];
+    if (top.nextChild < group.children.size()) {
+      const std::uint32_t child = group.children[top.nextChild++];
+      const Group& g = scene_.groups[child];
+      if (!g.primitives.empty() || !g.children.empty())
+        stack.push_back({child, 0, {}}); // invalidates top
+      continue;
+    }
+    const std::uint32_t node = buildGroupNode(top.group, std::move(top.childNodes));
+    stack.pop_back();
+    if (stack.empty()) return node;
+    stack.back().childNodes.push_back(node);
   }
+}
+
+// The node of one group whose sub-groups' nodes are `children`.
+std::uint32_t GroupBvh::buildGroupNode(std::uint32_t groupIndex,
+                                       std::vector<std::uint32_t> children) {
+  const Group& group = scene_.groups[groupIndex];
   std::vector<PrimitiveRef> prims;
   if (group.primitives.size() <= kLeafSize) {
     prims = group.primitives;

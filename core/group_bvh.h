@@ -34,7 +34,8 @@ private:
     std::uint32_t primBegin = 0, primCount = 0;
   };
 
-  std::uint32_t buildGroup(std::uint32_t group);
+  std::uint32_t buildGroups();
+  std::uint32_t buildGroupNode(std::uint32_t group, std::vector<std::uint32_t> children);
   std::uint32_t addNode(const std::vector<std::uint32_t>& children,
                         const std::vector<PrimitiveRef>& prims);
   template <class T, class MakeLeaf>

@@ -34,8 +34,11 @@ namespace fs = std::filesystem;
 // ---------------------------------------------------------------------------
 // Diagnostics
 
+// File names come from the command line and from `include` lines, and
+// messages quote the input: both are made printable (invalid UTF-8 escaped).
 std::string Diagnostic::format() const {
-  return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: " + message;
+  return printable(file) + ":" + std::to_string(line) + ":" + std::to_string(column) +
+         ": error: " + printable(message);
 }
 
 namespace {
@@ -69,11 +72,17 @@ constexpr const char* kMaxSceneBytesText = "256 MiB";
 constexpr int kMinResolution = 1;
 constexpr int kMaxResolution = 32768;
 constexpr std::uint64_t kMaxPolygonVertices = std::numeric_limits<std::uint32_t>::max();
+// Groups open at once. Each costs a saved material and transform (about 400
+// bytes), so without a limit a file of nothing but `push` would need 80 times
+// its size in memory.
+constexpr std::size_t kMaxGroupDepth = 100000;
 
 // ---------------------------------------------------------------------------
 // Parser
 
-struct TooManyErrors {}; // unwinds the parse once the diagnostic cap is reached
+// Unwinds the parse once the diagnostic cap is reached, or after an error
+// that would bury the rest under follow-up errors.
+struct StopParsing {};
 
 struct Location {
   std::string file;
@@ -307,7 +316,7 @@ Scene Parser::run(std::string_view text, const std::string& name) {
     parsedBytes_ = text.size();
     parseFile(text, name, identity, fileIndex(identity, name));
     checkCamera();
-  } catch (const TooManyErrors&) {
+  } catch (const StopParsing&) {
   }
   if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
   return std::move(scene_);
@@ -366,7 +375,7 @@ void Parser::closeOpenPushes() {
 void Parser::report(Location at, std::string message) {
   if (diagnostics_.size() >= kMaxDiagnostics) {
     diagnostics_.push_back({std::move(at.file), at.line, at.column, "too many errors; giving up"});
-    throw TooManyErrors{};
+    throw StopParsing{};
   }
   diagnostics_.push_back({std::move(at.file), at.line, at.column, std::move(message)});
 }
@@ -760,6 +769,11 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
 // Hierarchy and transforms
 
 void Parser::push(Command& c) {
+  if (saved_.size() >= kMaxGroupDepth) {
+    // Every later pop would be reported as unmatched: stop here.
+    error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
+    throw StopParsing{};
+  }
   saved_.push_back({material_, materialIndex_, transform_, group_,
                     Location{file().name, c.keyword.line, c.keyword.column}});
   const auto child = std::uint32_t(scene_.groups.size());

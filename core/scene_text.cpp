@@ -97,8 +97,65 @@ std::optional<std::uint64_t> parseInteger(std::string_view text) {
   return value;
 }
 
-// A token as it may appear inside a message: quoted, control bytes escaped and
-// long tokens shortened (hostile input can hold megabyte-long "tokens").
+namespace {
+
+// The length of the well-formed UTF-8 sequence at the start of `text`
+// (Unicode's table 3-7: no overlong forms, no surrogates, nothing above
+// U+10FFFF), or 0 if it does not start with one.
+std::size_t utf8SequenceLength(std::string_view text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(0);
+  std::size_t length = 0;
+  unsigned char secondLo = 0x80, secondHi = 0xBF;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    if (lead == 0xE0) secondLo = 0xA0; // overlong below U+0800
+    if (lead == 0xED) secondHi = 0x9F; // surrogates
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    if (lead == 0xF0) secondLo = 0x90; // overlong below U+10000
+    if (lead == 0xF4) secondHi = 0x8F; // above U+10FFFF
+  } else {
+    return 0;
+  }
+  if (text.size() < length || byte(1) < secondLo || byte(1) > secondHi) return 0;
+  for (std::size_t i = 2; i < length; ++i)
+    if (byte(i) < 0x80 || byte(i) > 0xBF) return 0;
+  return length;
+}
+
+} // namespace
+
+// Control bytes and bytes that are not part of well-formed UTF-8 become \xHH,
+// so that a message never carries raw binary input to the terminal.
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte >= 0x80) {
+      if (const std::size_t n = utf8SequenceLength(text.substr(i))) {
+        out.append(text.substr(i, n));
+        i += n;
+        continue;
+      }
+    } else if (byte >= 0x20 && byte != 0x7F) {
+      out += text[i++];
+      continue;
+    }
+    static constexpr char kHex[] = "0123456789abcdef";
+    out += "\\x";
+    out += kHex[byte >> 4];
+    out += kHex[byte & 0xF];
+    ++i;
+  }
+  return out;
+}
+
+// A token as it may appear inside a message: quoted, made printable and
+// shortened (hostile input can hold megabyte-long "tokens").
 std::string quoted(std::string_view text) {
   constexpr std::size_t kMaxShown = 40;
   bool shortened = false;
@@ -110,19 +167,7 @@ std::string quoted(std::string_view text) {
     text = text.substr(0, cut);
     shortened = true;
   }
-  std::string out = "'";
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7F) {
-      static constexpr char kHex[] = "0123456789abcdef";
-      out += "\\x";
-      out += kHex[byte >> 4];
-      out += kHex[byte & 0xF];
-    } else {
-      out += c;
-    }
-  }
-  return out + (shortened ? "...'" : "'");
+  return "'" + printable(text) + (shortened ? "...'" : "'");
 }
 
 bool isSpace(char c) {

@@ -28,8 +28,12 @@ bool isNumber(std::string_view text);
 // An integer literal: digits with an optional '+'. Saturates at 2^62.
 std::optional<std::uint64_t> parseInteger(std::string_view text);
 
-// A token as it may appear inside a message: quoted, control bytes escaped,
-// long tokens shortened.
+// Text as it may appear inside a message: control bytes and bytes that are
+// not well-formed UTF-8 escaped as \xHH, everything else unchanged.
+std::string printable(std::string_view text);
+
+// A token as it may appear inside a message: quoted, printable, long tokens
+// shortened.
 std::string quoted(std::string_view text);
 
 bool isSpace(char c);

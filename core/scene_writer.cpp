@@ -2,6 +2,7 @@
 
 #include "core/affine_decompose.h"
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
@@ -27,9 +28,9 @@ public:
 
   void header(const std::string& text) {
     std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line))
-      out_ << "# " << line << "\n";
+    std::string comment;
+    while (std::getline(lines, comment))
+      out_ << "# " << comment << "\n";
   }
 
   void globals() {
@@ -44,30 +45,52 @@ public:
     }
   }
 
-  // A group's own primitives, then its sub-groups, each inside push/pop.
-  void group(std::uint32_t index, int depth) {
-    const Group& g = scene_.groups[index];
-    for (const PrimitiveRef& ref : g.primitives)
-      primitive(ref, depth);
-    for (const std::uint32_t child : g.children) {
-      indent(depth);
-      out_ << "push\n";
-      const Material saved = current_;
-      group(child, depth + 1);
-      current_ = saved; // what `pop` restores
-      indent(depth);
-      out_ << "pop\n";
+  // Every group's own primitives, then its sub-groups, each inside push/pop.
+  // Groups may nest as deep as the reader allows, so the walk keeps its own
+  // stack rather than recursing.
+  void groups() {
+    struct Open {
+      std::uint32_t group;
+      std::size_t nextChild = 0;
+      Material saved; // the material `pop` restores
+    };
+    primitives(0, 0);
+    std::vector<Open> open{{0, 0, current_}};
+    while (!open.empty()) {
+      const int depth = int(open.size()) - 1;
+      Open& top = open.back();
+      const Group& g = scene_.groups[top.group];
+      if (top.nextChild == g.children.size()) {
+        current_ = top.saved;
+        open.pop_back();
+        if (depth > 0) line(depth - 1) << "pop\n";
+        continue;
+      }
+      const std::uint32_t child = g.children[top.nextChild++];
+      line(depth) << "push\n";
+      open.push_back({child, 0, current_}); // invalidates top
+      primitives(child, depth + 1);
     }
   }
 
 private:
-  void indent(int depth) { out_ << std::string(std::size_t(depth) * 2, ' '); }
+  // Starts a line indented by two spaces per level, up to kMaxIndent levels:
+  // deeper nesting is not indented further, or the output would grow with
+  // the square of the depth.
+  static constexpr int kMaxIndent = 16;
+  std::ostream& line(int depth) {
+    return out_ << std::string(std::size_t(std::min(depth, kMaxIndent)) * 2, ' ');
+  }
+
+  void primitives(std::uint32_t group, int depth) {
+    for (const PrimitiveRef& ref : scene_.groups[group].primitives)
+      primitive(ref, depth);
+  }
 
   void material(const Material& m, int depth) {
     if (m == current_) return;
-    indent(depth);
-    out_ << "surface " << vec(m.color) << "  " << num(m.kdr) << " " << num(m.ksr) << " "
-         << num(m.kst) << "  " << num(m.e) << " " << num(m.ir) << "\n";
+    line(depth) << "surface " << vec(m.color) << "  " << num(m.kdr) << " " << num(m.ksr) << " "
+                << num(m.kst) << "  " << num(m.e) << " " << num(m.ir) << "\n";
     current_ = m;
   }
 
@@ -75,18 +98,14 @@ private:
   // object written in its own frame.
   void placed(const Mat3& a, const Vec3& offset, int depth) {
     const RotationScaleRotation d = decompose(a);
-    indent(depth);
-    out_ << "translate " << vec(offset) << "\n";
+    line(depth) << "translate " << vec(offset) << "\n";
     Vec3 axis;
     double degrees;
     axisAngle(d.u, axis, degrees);
-    indent(depth);
-    out_ << "rotate " << vec(axis) << " " << num(degrees) << "\n";
-    indent(depth);
-    out_ << "scale " << vec(d.scale) << "\n";
+    line(depth) << "rotate " << vec(axis) << " " << num(degrees) << "\n";
+    line(depth) << "scale " << vec(d.scale) << "\n";
     axisAngle(glm::transpose(d.v), axis, degrees);
-    indent(depth);
-    out_ << "rotate " << vec(axis) << " " << num(degrees) << "\n";
+    line(depth) << "rotate " << vec(axis) << " " << num(degrees) << "\n";
   }
 
   void primitive(const PrimitiveRef& ref, int depth) {
@@ -94,27 +113,22 @@ private:
     switch (ref.kind) {
     case PrimitiveKind::Sphere: {
       const Sphere& s = scene_.spheres[ref.index];
-      indent(depth);
-      out_ << "sphere " << vec(s.center) << " " << num(s.radius) << "\n";
+      line(depth) << "sphere " << vec(s.center) << " " << num(s.radius) << "\n";
       break;
     }
     case PrimitiveKind::Ellipsoid: {
       // The unit sphere under the inverse of worldToObject.
       const Ellipsoid& e = scene_.ellipsoids[ref.index];
       const Mat3 a = glm::inverse(e.worldToObject);
-      indent(depth);
-      out_ << "push\n";
+      line(depth) << "push\n";
       placed(a, -(a * e.worldToObjectOffset), depth + 1);
-      indent(depth + 1);
-      out_ << "sphere 0 0 0 1\n";
-      indent(depth);
-      out_ << "pop\n";
+      line(depth + 1) << "sphere 0 0 0 1\n";
+      line(depth) << "pop\n";
       break;
     }
     case PrimitiveKind::Polygon: {
       const Polygon& p = scene_.polygons[ref.index];
-      indent(depth);
-      out_ << "polygon " << p.vertexCount;
+      line(depth) << "polygon " << p.vertexCount;
       for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
         out_ << "  " << vec(scene_.polygonVertices[p.firstVertex + i]);
       }
@@ -124,8 +138,7 @@ private:
     case PrimitiveKind::Cone: cone(scene_.cones[ref.index], depth); break;
     case PrimitiveKind::Triangle: {
       const Triangle& t = scene_.triangles[ref.index];
-      indent(depth);
-      out_ << (t.smooth() ? "ptriangle" : "triangle");
+      line(depth) << (t.smooth() ? "ptriangle" : "triangle");
       for (int i = 0; i < 3; ++i) {
         out_ << "  " << vec(scene_.meshVertices[t.vertex[std::size_t(i)]]);
         if (t.smooth()) out_ << "  " << vec(scene_.meshNormals[t.normal[std::size_t(i)]]);
@@ -140,19 +153,17 @@ private:
     const Mat3& m = c.objectToWorld;
     if (isCircular(c)) {
       const double unit = glm::length(m[0]); // world length of the frame's x
-      indent(depth);
-      out_ << "cone " << vec(c.objectToWorldOffset) << " " << num(c.baseRadius * unit) << "  "
-           << vec(c.objectToWorldOffset + m[2]) << " " << num(c.apexRadius * unit) << "\n";
+      line(depth) << "cone " << vec(c.objectToWorldOffset) << " " << num(c.baseRadius * unit)
+                  << "  " << vec(c.objectToWorldOffset + m[2]) << " " << num(c.apexRadius * unit)
+                  << "\n";
       return;
     }
     // Elliptic (sheared or unevenly scaled): the cone in its own frame, placed.
-    indent(depth);
-    out_ << "push\n";
+    line(depth) << "push\n";
     placed(m, c.objectToWorldOffset, depth + 1);
-    indent(depth + 1);
-    out_ << "cone 0 0 0 " << num(c.baseRadius) << "  0 0 1 " << num(c.apexRadius) << "\n";
-    indent(depth);
-    out_ << "pop\n";
+    line(depth + 1) << "cone 0 0 0 " << num(c.baseRadius) << "  0 0 1 " << num(c.apexRadius)
+                    << "\n";
+    line(depth) << "pop\n";
   }
 
   std::ostream& out_;
@@ -166,7 +177,7 @@ void writeScene(std::ostream& out, const Scene& scene, const std::string& header
   Writer w(out, scene);
   w.header(header);
   w.globals();
-  w.group(0, 0);
+  w.groups();
 }
 
 void saveScene(const std::filesystem::path& path, const Scene& scene, const std::string& header) {

@@ -8,14 +8,17 @@
 #include "core/exposure.h"
 #include "core/renderer.h"
 #include "core/scene_parser.h"
+#include "core/scene_writer.h"
 #include "core/tracer.h"
 
 #include "tests/scene_builder.h"
+#include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace prism {
@@ -122,8 +125,7 @@ TEST(Hostile, OverflowingRadianceSaturatesInsteadOfBecomingNaN) {
   EXPECT_EQ(exposeChannel(r.film.radiance[0].r, exposureScale(r.avgmax)), 128);
 
   // Coefficients whose product overflows, under no light: exactly 0.
-  EXPECT_EQ(centreRadiance("surface 1e300 1e300 1e300 1e300 0 0 1 1\nsphere 0 0 0 1\n", 1, 1, 0,
-                           0),
+  EXPECT_EQ(centreRadiance("surface 1e300 1e300 1e300 1e300 0 0 1 1\nsphere 0 0 0 1\n", 1, 1, 0, 0),
             Color(0.0));
 }
 
@@ -136,6 +138,50 @@ TEST(Hostile, ExposureOfAnExtremelyDarkPictureIsFinite) {
   EXPECT_EQ(exposeChannel(1e-40f, scale), 0);
   EXPECT_EQ(exposeChannel(1e-30f, scale), 255);
   EXPECT_EQ(exposureScale(std::numeric_limits<double>::infinity()), 0.0f);
+}
+
+// `levels` nested groups with a sphere in the innermost.
+std::string nestedGroups(int levels) {
+  std::string text;
+  for (int i = 0; i < levels; ++i)
+    text += "push ";
+  text += "\nsphere 0 0 0 1\n";
+  for (int i = 0; i < levels; ++i)
+    text += "pop ";
+  return text;
+}
+
+// 10^5 nested groups (the limit): the groups hierarchy is built without
+// recursion (it overflowed the machine stack near 30,800 levels), finds the
+// innermost sphere, and the scene writer neither recurses nor indents without
+// bound (its output grew with the square of the depth: 2.4 GB here).
+TEST(Hostile, GroupsNestedToTheLimitBuildRenderAndWriteBack) {
+  const int levels = 100000;
+  const Scene scene = parseScene(nestedGroups(levels), "t.sc");
+  ASSERT_EQ(scene.groups.size(), std::size_t(levels) + 1);
+  for (AccelKind kind : kEveryAccel) {
+    const auto accel = makeAccel(scene, kind);
+    Hit hit;
+    ASSERT_TRUE(accel->closestHit({Vec3(0, 0, 5), Vec3(0, 0, -1)}, Interval{}, nullptr, hit))
+        << accelKindName(kind);
+    EXPECT_EQ(hit.t, 4.0);
+  }
+  std::ostringstream out;
+  writeScene(out, scene);
+  const std::string text = out.str();
+  // push and pop per level, each indented by at most 32 spaces.
+  EXPECT_LT(text.size(), std::size_t(levels) * 2 * (32 + 6) + 1000);
+  const Scene back = parseScene(text, "back.sc");
+  EXPECT_EQ(back.groups.size(), scene.groups.size());
+  EXPECT_EQ(back.spheres.size(), 1u);
+}
+
+// One more level is refused with one located error (each open group costs
+// memory), and the parse stops there rather than reporting every later pop.
+TEST(Hostile, GroupsNestedBeyondTheLimitAreOneError) {
+  const std::string text = nestedGroups(100001);
+  EXPECT_EQ(test::sceneErrorsOf(text),
+            "t.sc:1:500001: error: push: groups nested more than 100000 deep");
 }
 
 } // namespace

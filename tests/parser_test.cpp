@@ -613,6 +613,25 @@ TEST(ParserErrors, UnprintableAndLongTokensAreShownSafely) {
             "t.sc:1:1: error: unknown keyword '" + std::string(40, 'a') + "...'");
 }
 
+// Well-formed UTF-8 is shown as it is; every byte that is not part of it (a
+// stray continuation byte, an overlong form, a surrogate, a code point above
+// U+10FFFF, a sequence cut short) is escaped like a control byte.
+TEST(ParserErrors, InvalidUtf8IsEscapedAndValidUtf8Kept) {
+  EXPECT_EQ(sceneErrorsOf("sph\u00e8re"), "t.sc:1:1: error: unknown keyword 'sph\u00e8re'");
+  EXPECT_EQ(sceneErrorsOf("\u2192\U0001F600"),
+            "t.sc:1:1: error: unknown keyword '\u2192\U0001F600'");
+  EXPECT_EQ(sceneErrorsOf("a\x80"
+                          "b"),
+            "t.sc:1:1: error: unknown keyword 'a\\x80b'");
+  EXPECT_EQ(sceneErrorsOf("\xc0\xaf"), "t.sc:1:1: error: unknown keyword '\\xc0\\xaf'");
+  EXPECT_EQ(sceneErrorsOf("\xed\xa0\x80"), "t.sc:1:1: error: unknown keyword '\\xed\\xa0\\x80'");
+  EXPECT_EQ(sceneErrorsOf("\xf4\x90\x80\x80"),
+            "t.sc:1:1: error: unknown keyword '\\xf4\\x90\\x80\\x80'");
+  EXPECT_EQ(sceneErrorsOf("x\xe2\x86"), "t.sc:1:1: error: unknown keyword 'x\\xe2\\x86'");
+  // The file name is made printable too (it comes from the command line).
+  EXPECT_EQ(sceneErrorsOf("bad", "\xff.sc"), "\\xff.sc:1:1: error: unknown keyword 'bad'");
+}
+
 TEST(ParserErrors, TooManyNumbers) {
   EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1 2 3\n"),
             "t.sc:1:16: error: expected a command but found the number '2' (too many numbers for "

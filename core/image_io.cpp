@@ -1,10 +1,11 @@
 #include "core/image_io.h"
 
+#include "core/pending_file.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <stdexcept>
-#include <system_error>
 #include <unistd.h>
 
 namespace prism {
@@ -16,19 +17,15 @@ using OIIO::TypeDesc;
 
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
 
 void writeAtomically(const fs::path& path, int width, int height, TypeDesc type,
                      const void* pixels) {
-  // Same directory (so rename is atomic) and same extension (OIIO picks the
-  // format by it); the leading dot hides it from casual listings meanwhile.
-  const fs::path temp = path.parent_path() / ("." + path.stem().string() + ".prism-" +
-                                              std::to_string(getpid()) + path.extension().string());
+  PendingFile file(path);
   auto fail = [&](const std::string& why) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
     throw std::runtime_error("cannot write '" + path.string() + "': " + why);
   };
   auto out = OIIO::ImageOutput::create(path.string());
@@ -36,21 +33,19 @@ void writeAtomically(const fs::path& path, int width, int height, TypeDesc type,
   OIIO::ImageSpec spec(width, height, 3, type);
   spec.attribute("compression", "zip");
   spec.attribute("Software", "Prism");
-  if (!out->open(temp.string(), spec)) fail(out->geterror());
+  if (!out->open(file.tempPath().string(), spec)) fail(out->geterror());
   if (!out->write_image(type, pixels)) {
     const std::string why = out->geterror();
     out->close();
     fail(why);
   }
   if (!out->close()) fail(out->geterror());
-  std::error_code error;
-  fs::rename(temp, path, error);
-  if (error) fail(error.message());
+  file.commit();
 }
 
 } // namespace
 
-void checkWritable(const fs::path& path) {
+void checkWritableFile(const fs::path& path) {
   auto fail = [&](const std::string& why) {
     throw std::runtime_error("cannot write '" + path.string() + "': " + why);
   };
@@ -59,9 +54,16 @@ void checkWritable(const fs::path& path) {
   std::error_code error;
   if (!fs::is_directory(dir, error)) fail("no such directory '" + dir.string() + "'");
   if (access(dir.c_str(), W_OK) != 0) fail("directory '" + dir.string() + "' is not writable");
+  if (fs::is_directory(path, error)) fail("it is a directory");
+}
+
+void checkWritable(const fs::path& path) {
+  checkWritableFile(path);
   if (!OIIO::ImageOutput::create(path.string())) {
     OIIO::geterror(); // consume the message so it does not leak into a later error
-    fail("no image format for the extension '" + path.extension().string() + "'");
+    throw std::runtime_error("cannot write '" + path.string() +
+                             "': no image format for the extension '" + path.extension().string() +
+                             "'");
   }
 }
 
@@ -70,11 +72,13 @@ bool isFloatFormat(const fs::path& path) {
   return ext == ".exr" || ext == ".hdr";
 }
 
-void writeImage8(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+void writeImage8(const fs::path& path, int width, int height,
+                 const std::vector<std::uint8_t>& rgb) {
   writeAtomically(path, width, height, TypeDesc::UINT8, rgb.data());
 }
 
-void writeImageFloat(const fs::path& path, int width, int height, const std::vector<Rgb>& radiance) {
+void writeImageFloat(const fs::path& path, int width, int height,
+                     const std::vector<Rgb>& radiance) {
   writeAtomically(path, width, height, TypeDesc::FLOAT, radiance.data());
 }
 

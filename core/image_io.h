@@ -15,8 +15,12 @@ namespace prism {
 // radiance before exposure rather than 8-bit pixels.
 bool isFloatFormat(const std::filesystem::path& path);
 
-// Throws std::runtime_error, before any work is spent, when `path` could not be
-// written: no image format for its extension, or no such directory.
+// Throws std::runtime_error, before any work is spent, when a file could not
+// be written at `path`: no such directory, one that is not writable, or a
+// directory of that name.
+void checkWritableFile(const std::filesystem::path& path);
+
+// checkWritableFile, and an image format for the extension.
 void checkWritable(const std::filesystem::path& path);
 
 // Interleaved 8-bit RGB (row 0 at the top). Throws std::runtime_error on failure.

@@ -6,6 +6,7 @@
 
 #include <condition_variable>
 #include <optional>
+#include <stdexcept>
 
 namespace prism {
 
@@ -51,6 +52,7 @@ struct RenderSession::Work {
   Clock::time_point end; // when the render finished: elapsed time stops there
   bool done = false;
   std::condition_variable doneChanged;
+  std::string failure; // why the render stopped early, if it failed
 };
 
 RenderSession::RenderSession(Scene scene, const RenderSettings& settings, AccelKind accel)
@@ -91,7 +93,26 @@ void RenderSession::startWorkers(bool keepPass1) {
     version_.fetch_add(1, std::memory_order_release);
   }
   Work* current = work_.get(); // replaced only after this thread is joined
-  driver_ = std::jthread([this, current, keepPass1] { run(*current, keepPass1); });
+  driver_ = std::jthread([this, current, keepPass1] {
+    // A failure (memory exhausted in a tile, say) ends this render with its
+    // reason instead of the whole program, and whoever waits is woken.
+    std::string failure;
+    try {
+      run(*current, keepPass1);
+      return;
+    } catch (const std::bad_alloc&) {
+      failure = "out of memory";
+    } catch (const std::exception& error) {
+      failure = error.what();
+    }
+    {
+      std::lock_guard lock(mutex_);
+      current->failure = failure;
+      current->done = true;
+    }
+    current->doneChanged.notify_all();
+    version_.fetch_add(1, std::memory_order_release);
+  });
 }
 
 void RenderSession::restart(bool keepPass1) {
@@ -146,6 +167,11 @@ void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel
 }
 
 RenderSettings RenderSession::settings() const { return settings_; }
+
+std::string RenderSession::failure() const {
+  std::lock_guard lock(mutex_);
+  return work_->failure;
+}
 
 Scene RenderSession::sceneCopy() const { return *scene_; }
 
@@ -312,6 +338,7 @@ bool RenderSession::finished() const {
 RenderResult RenderSession::waitForResult() {
   std::unique_lock lock(mutex_);
   work_->doneChanged.wait(lock, [this] { return work_->done; });
+  if (!work_->failure.empty()) throw std::runtime_error("the render failed: " + work_->failure);
   RenderResult result;
   result.film = work_->film;
   result.avgmax = work_->avgmax;

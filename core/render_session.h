@@ -105,8 +105,12 @@ public:
   SessionProgress progress() const;
   bool finished() const;
 
+  // Why the current render stopped early (out of memory, say), or "".
+  std::string failure() const;
+
   // Blocks until the render is complete, then returns the finished film: the
-  // picture `prism render` would write (same samples, same avgmax).
+  // picture `prism render` would write (same samples, same avgmax). Throws
+  // std::runtime_error if the render failed.
   RenderResult waitForResult();
 
 private:

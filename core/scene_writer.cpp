@@ -1,6 +1,7 @@
 #include "core/scene_writer.h"
 
 #include "core/affine_decompose.h"
+#include "core/pending_file.h"
 
 #include <algorithm>
 #include <charconv>
@@ -181,26 +182,7 @@ void writeScene(std::ostream& out, const Scene& scene, const std::string& header
 }
 
 void saveScene(const std::filesystem::path& path, const Scene& scene, const std::string& header) {
-  namespace fs = std::filesystem;
-  const fs::path temp = path.string() + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-    writeScene(out, scene, header);
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temp, ignored);
-      throw std::runtime_error("cannot write '" + path.string() + "'");
-    }
-  }
-  std::error_code error;
-  fs::rename(temp, path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    throw std::runtime_error("cannot write '" + path.string() + "': " + error.message());
-  }
+  writeFileAtomically(path, [&](std::ostream& out) { writeScene(out, scene, header); });
 }
 
 } // namespace prism

@@ -95,6 +95,58 @@ TEST_F(Cli, UnwritableOutputExitsWith1BeforeRendering) {
   EXPECT_FALSE(fs::exists(dir_ / "x.unknownformat"));
 }
 
+// Every output is checked before any work: an unwritable statistics file was
+// found only after rendering, when the picture had already been written.
+TEST_F(Cli, EveryOutputIsCheckedBeforeAnyWork) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "o.tiff";
+  const RunResult json = prism("render " + s + " -o " + out.string() + " --stats-json " +
+                               (dir_ / "no/s.json").string());
+  EXPECT_EQ(json.exitCode, 1);
+  EXPECT_NE(
+      json.err.find("cannot write '" + (dir_ / "no/s.json").string() + "': no such directory"),
+      std::string::npos)
+      << json.err;
+  EXPECT_EQ(json.err.find("render CPU"), std::string::npos) << "rendered before failing";
+  EXPECT_FALSE(fs::exists(out));
+  // A directory where the file should go.
+  fs::create_directory(dir_ / "taken.json");
+  const RunResult taken = prism("render " + s + " -o " + out.string() + " --stats-json " +
+                                (dir_ / "taken.json").string());
+  EXPECT_EQ(taken.exitCode, 1);
+  EXPECT_NE(taken.err.find("it is a directory"), std::string::npos) << taken.err;
+  EXPECT_FALSE(fs::exists(out));
+  // convert checks its output before reading the input (here a broken one).
+  const fs::path bad = write("bad.sc", "sphere 0 0 0 -1\n");
+  const RunResult convert = prism("convert " + bad.string() + " " + (dir_ / "no/out.sc").string());
+  EXPECT_EQ(convert.exitCode, 1);
+  EXPECT_EQ(convert.err.find("bad.sc:1"), std::string::npos) << convert.err;
+}
+
+// A render too large for the memory that can be had is refused up front with
+// exit 1 (it died of an uncaught std::bad_alloc, exit 134, or asked for 27 GB).
+TEST_F(Cli, ARenderTooLargeForMemoryIsRefusedBeforeStarting) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "big.tiff";
+  const RunResult run = runCaptured("PRISM_MEMORY_LIMIT=1G " + quoted(PRISM_BINARY) + " render " +
+                                        s + " --size 32768 32768 -o " + out.string(),
+                                    dir_);
+  EXPECT_EQ(run.exitCode, 1);
+  // 32768^2 pixels of 28 bytes each: 28 GiB.
+  EXPECT_NE(run.err.find("prism: error: a 32768 x 32768 render needs about 28.0 GiB of memory, but "
+                         "only 1.0 GiB is available (limited by PRISM_MEMORY_LIMIT)"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(out));
+  // The same limit lets a small render through.
+  EXPECT_EQ(runCaptured("PRISM_MEMORY_LIMIT=1G " + quoted(PRISM_BINARY) + " render " + s +
+                            " --size 64 64 -q -o " + out.string(),
+                        dir_)
+                .exitCode,
+            0);
+  EXPECT_TRUE(fs::exists(out));
+}
+
 TEST_F(Cli, WritesAn8BitRgbTiffAndJsonStatistics) {
   const std::string s = write("s.sc", kSmallScene).string();
   const fs::path out = dir_ / "o.tiff", json = dir_ / "stats.json";

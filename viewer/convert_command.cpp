@@ -3,6 +3,7 @@
 #include "load_scene.h"
 #include "render_command.h"
 
+#include "core/image_io.h"
 #include "core/scene_loader.h"
 #include "core/scene_writer.h"
 
@@ -28,15 +29,12 @@ int runConvertCommand(const ConvertCommandOptions& o) {
               << "' names another format\n";
     return kExitUsage;
   }
+  if (!succeeds([&] { checkWritableFile(o.output); })) return kExitFailure;
   const std::optional<Scene> loaded = loadSceneReporting(o.input);
   if (!loaded) return kExitUsage;
   const Scene& scene = *loaded;
-  try {
-    saveScene(o.output, scene, "Converted by prism convert from " + o.input);
-  } catch (const std::exception& error) {
-    std::cerr << "prism: error: " << error.what() << "\n";
+  if (!succeeds([&] { saveScene(o.output, scene, "Converted by prism convert from " + o.input); }))
     return kExitFailure;
-  }
   if (!o.quiet) {
     std::cerr << "wrote " << o.output << ": " << scene.primitiveCount() << " primitives ("
               << scene.spheres.size() + scene.ellipsoids.size() << " spheres, "

@@ -20,4 +20,14 @@ std::optional<Scene> loadSceneReporting(const std::string& path) {
   }
 }
 
+bool succeeds(const std::function<void()>& io) {
+  try {
+    io();
+    return true;
+  } catch (const std::exception& error) {
+    std::cerr << "prism: error: " << error.what() << "\n";
+    return false;
+  }
+}
+
 } // namespace prism

@@ -4,7 +4,12 @@
 #include "render_command.h"
 #include "view_command.h"
 
+#include "core/pending_file.h"
+
 #include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <new>
 
 int main(int argc, char** argv) {
   using namespace prism;
@@ -31,9 +36,23 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? kExitOk : kExitUsage;
   }
-  if (renderCmd->parsed()) return runRenderCommand(render);
-  if (viewCmd->parsed()) return runViewCommand(view);
-  if (benchCmd->parsed()) return runBenchCommand(bench);
-  if (convertCmd->parsed()) return runConvertCommand(convert);
+  // Ctrl-C or a kill while a file is being written must not leave its
+  // temporary behind.
+  removePendingFilesOnSignals();
+  // Commands report their own errors; what reaches here (memory exhausted on
+  // any thread, say) still ends with a message and the failure status, not
+  // with std::terminate and a core dump.
+  try {
+    if (renderCmd->parsed()) return runRenderCommand(render);
+    if (viewCmd->parsed()) return runViewCommand(view);
+    if (benchCmd->parsed()) return runBenchCommand(bench);
+    if (convertCmd->parsed()) return runConvertCommand(convert);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "prism: error: out of memory\n";
+    return kExitFailure;
+  } catch (const std::exception& error) {
+    std::cerr << "prism: error: " << error.what() << "\n";
+    return kExitFailure;
+  }
   return kExitUsage;
 }

@@ -34,6 +34,8 @@ void sceneSection(ViewController& c) {
       ImGui::TextWrapped("%s", w.c_str());
     ImGui::PopStyleColor();
   }
+  if (const std::string failure = c.renderFailure(); !failure.empty())
+    ImGui::TextColored(kErrorColour, "The render failed: %s", failure.c_str());
   if (!c.sceneErrors().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
     ImGui::TextWrapped("The scene has errors; showing the last good one:");

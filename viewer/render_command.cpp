@@ -6,7 +6,9 @@
 #include "core/exposure.h"
 #include "core/image_formation.h"
 #include "core/image_io.h"
+#include "core/memory_budget.h"
 #include "core/parallel.h"
+#include "core/pending_file.h"
 #include "core/scene_loader.h"
 #include "core/stats.h"
 #include "core/system_info.h"
@@ -43,13 +45,6 @@ int printPixelTree(const Scene& scene, const Accel& accel, const RenderSettings&
             << counts.transmitted << " transmitted (" << counts.tirEvents
             << " total internal reflections)\n";
   return kExitOk;
-}
-
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 } // namespace
@@ -99,6 +94,14 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
 }
 
 int runRenderCommand(const RenderCommandOptions& o) {
+  // Every output is checked before any work: a typo in a folder name must not
+  // cost a render, or leave a picture without its statistics.
+  const bool writable = succeeds([&] {
+    if (o.pixel.empty()) checkWritable(o.output);
+    if (!o.statsJson.empty()) checkWritableFile(o.statsJson);
+  });
+  if (!writable) return kExitFailure;
+
   const auto loadStart = Clock::now();
   const std::optional<Scene> loaded = loadSceneReporting(o.scene);
   if (!loaded) return kExitUsage;
@@ -118,11 +121,14 @@ int runRenderCommand(const RenderCommandOptions& o) {
               << settings.width << " x " << settings.height << " image\n";
     return kExitUsage;
   }
-  try {
-    if (o.pixel.empty()) checkWritable(o.output);
-  } catch (const std::exception& error) {
-    std::cerr << "prism: error: " << error.what() << "\n";
-    return kExitFailure;
+  if (o.pixel.empty()) {
+    const std::string what =
+        "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) + " render";
+    if (const std::optional<std::string> problem = memoryProblem(
+            imageBytes(settings.width, settings.height, kRenderBytesPerPixel), what)) {
+      std::cerr << "prism: error: " << *problem << "\n";
+      return kExitFailure;
+    }
   }
 
   const auto buildStart = Clock::now();
@@ -141,17 +147,15 @@ int runRenderCommand(const RenderCommandOptions& o) {
   stats.wallSeconds = secondsSince(renderStart);
   stats.cpuSeconds = processCpuSeconds() - cpuStart;
 
-  try {
+  const bool written = succeeds([&] {
     if (isFloatFormat(o.output) || o.floatTiff) {
       writeImageFloat(o.output, settings.width, settings.height, result.film.radiance);
     } else {
       writeImage8(o.output, settings.width, settings.height,
                   exposeImage(result.film.radiance, exposureScale(result.avgmax)));
     }
-  } catch (const std::exception& error) {
-    std::cerr << "prism: error: " << error.what() << "\n";
-    return kExitFailure;
-  }
+  });
+  if (!written) return kExitFailure;
 
   stats.scene = o.scene;
   stats.machine = machineDescription();
@@ -170,12 +174,10 @@ int runRenderCommand(const RenderCommandOptions& o) {
   stats.avgmax = result.avgmax;
   if (!o.quiet) std::cerr << formatStatsText(stats);
   if (!o.statsJson.empty()) {
-    try {
-      writeText(o.statsJson, formatStatsJson(stats));
-    } catch (const std::exception& error) {
-      std::cerr << "prism: error: " << error.what() << "\n";
+    const std::string json = formatStatsJson(stats);
+    if (!succeeds(
+            [&] { writeFileAtomically(o.statsJson, [&](std::ostream& out) { out << json; }); }))
       return kExitFailure;
-    }
   }
   return kExitOk;
 }

@@ -40,7 +40,14 @@ void SaveJob::poll(RenderSession& session) {
   if (state_ == State::WaitingForRender && session.finished()) {
     // finished() is true, so this returns at once; only this thread edits the
     // session, so nothing can restart it in between.
-    auto result = std::make_shared<RenderResult>(session.waitForResult());
+    std::shared_ptr<RenderResult> result;
+    try {
+      result = std::make_shared<RenderResult>(session.waitForResult());
+    } catch (const std::exception& error) { // the render failed: nothing to write
+      state_ = State::Failed;
+      message_ = error.what();
+      return;
+    }
     message_ = "writing " + path_.string();
     state_ = State::Writing;
     writing_ = std::async(std::launch::async, [result, path = path_]() -> std::string {

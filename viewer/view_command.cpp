@@ -1,5 +1,6 @@
 #include "view_command.h"
 
+#include "core/memory_budget.h"
 #include "core/parallel.h"
 #include "core/scene_loader.h"
 
@@ -87,6 +88,14 @@ int runViewCommand(const ViewCommandOptions& o) {
     v.savePath = o.render.output.empty()
                      ? std::filesystem::path(o.render.scene).stem().string() + ".tiff"
                      : o.render.output;
+    const std::string what = "a " + std::to_string(v.settings.width) + " x " +
+                             std::to_string(v.settings.height) + " preview";
+    if (const std::optional<std::string> problem = memoryProblem(
+            imageBytes(v.settings.width, v.settings.height, kPreviewBytesPerPixel), what)) {
+      std::cerr << "prism: error: " << *problem << "\n";
+      closeWindowSystem();
+      return kExitFailure;
+    }
     const std::optional<int> ran = runViewApp(std::move(scene), app, why);
     closeWindowSystem();
     return ran ? *ran : renderHeadless(o, why);

@@ -66,6 +66,8 @@ public:
 
   RenderSettings settings() const { return session_->settings(); }
   const Scene& scene() const { return session_->scene(); }
+  // Why the render stopped early (out of memory, say), or "".
+  std::string renderFailure() const { return session_->failure(); }
   const std::string& scenePath() const { return options_.scenePath; }
   const std::vector<std::string>& sceneErrors() const { return sceneErrors_; }
   // What loading the current scene warned about (ignored OBJ/MTL fields, NFF

@@ -14,7 +14,9 @@
 namespace prism {
 
 // Reads the OBJ file at `path` and the MTL files it names (relative to its
-// directory). Zero-area faces are dropped with a warning in `warnings`.
+// directory). Zero-area faces are dropped with a warning in `warnings`; a file
+// without faces gets a warning, and the camera and lights of a unit box at
+// the origin.
 Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnings = nullptr);
 
 // The material an MTL entry becomes (exposed for tests): colour Kd, kdr the

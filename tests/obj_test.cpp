@@ -1,7 +1,7 @@
 // OBJ/MTL import: faces (triangles, quads, concave polygons, negative
 // indices, with and without normals), the MTL mapping onto Prism's material,
-// groups, face lines, the default camera and lights, and every error with
-// its file, line and column.
+// groups, face lines, the default camera and lights, every error with its
+// file, line and column, and hostile input (issue 10).
 #include "core/accel.h"
 #include "core/obj_reader.h"
 #include "core/tracer.h"
@@ -11,7 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace prism {
 namespace {
@@ -44,6 +47,19 @@ protected:
   test::ScratchDir scratch_;
   const fs::path dir_ = scratch_.path();
 };
+
+// Every index a triangle holds is one the renderer follows without checking.
+void expectIndicesInBounds(const Scene& s) {
+  for (const Triangle& t : s.triangles) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_LT(t.vertex[c], s.meshVertices.size());
+      if (t.smooth()) {
+        EXPECT_LT(t.normal[c], s.meshNormals.size());
+      }
+    }
+    EXPECT_LT(t.material, s.materials.size());
+  }
+}
 
 constexpr const char* kMtl = R"(# materials
 newmtl red
@@ -105,6 +121,7 @@ TEST_F(Obj, FacesBecomeTriangles) {
   const Scene s = loadObj(write("t.obj", kObj));
   // 1 + 1 triangles, a quad in 2, a concave pentagon in 3, one more.
   ASSERT_EQ(s.triangles.size(), 8u);
+  expectIndicesInBounds(s);
   EXPECT_EQ(s.primitiveCount(), 8u);
   const Vec3* v = s.meshVertices.data();
   // f 1//1 2//1 3//1: smooth, its normal given.
@@ -246,17 +263,17 @@ TEST_F(Obj, Errors) {
   EXPECT_EQ(errorsOf("vn 1 2 3 4\n"),
             "DIR/t.obj:1:10: error: vn: unexpected '4' after the statement's arguments");
   EXPECT_EQ(errorsOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
-            "DIR/t.obj:4:7: error: f: vertex index 9 is out of range (3 'v' statements before "
+            "DIR/t.obj:4:7: error: f: vertex index '9' is out of range (3 'v' statements before "
             "this face)");
   EXPECT_EQ(errorsOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n"),
-            "DIR/t.obj:4:7: error: f: vertex index -4 is out of range (3 'v' statements before "
+            "DIR/t.obj:4:7: error: f: vertex index '-4' is out of range (3 'v' statements before "
             "this face)");
   EXPECT_EQ(errorsOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n"),
-            "DIR/t.obj:4:3: error: f: normal index 1 is out of range (0 'vn' statements before "
+            "DIR/t.obj:4:3: error: f: normal index '1' is out of range (0 'vn' statements before "
             "this face)\n"
-            "DIR/t.obj:4:8: error: f: normal index 1 is out of range (0 'vn' statements before "
+            "DIR/t.obj:4:8: error: f: normal index '1' is out of range (0 'vn' statements before "
             "this face)\n"
-            "DIR/t.obj:4:13: error: f: normal index 1 is out of range (0 'vn' statements before "
+            "DIR/t.obj:4:13: error: f: normal index '1' is out of range (0 'vn' statements before "
             "this face)");
   EXPECT_EQ(errorsOf("v 0 0 0\nv 1 0 0\nf 1 2\n"),
             "DIR/t.obj:3:1: error: f: a face needs at least 3 vertices, found 2");
@@ -302,6 +319,299 @@ TEST_F(Obj, UnreadableFile) {
               (dir_ / "missing.obj").string() +
                   ":1:1: error: cannot read file: No such file or directory");
   }
+}
+
+// ---------------------------------------------------------------------------
+// Hostile input (issue 10): the scan and tinyobjloader must read the same
+// statements, and nothing that loads may send the renderer out of bounds.
+
+// The triangle's vertices, in its order.
+std::array<Vec3, 3> cornersOf(const Scene& s, std::size_t triangle) {
+  const Triangle& t = s.triangles.at(triangle);
+  return {s.meshVertices.at(t.vertex[0]), s.meshVertices.at(t.vertex[1]),
+          s.meshVertices.at(t.vertex[2])};
+}
+
+// The unit triangle (0 0 z) (1 0 z) (0 1 z) as the triangle `triangle` of `s`.
+void expectUnitTriangle(const Scene& s, std::size_t triangle, double z = 0.0) {
+  const std::array<Vec3, 3> v = cornersOf(s, triangle);
+  expectCloseTo(v[0], {0, 0, z});
+  expectCloseTo(v[1], {1, 0, z});
+  expectCloseTo(v[2], {0, 1, z});
+}
+
+constexpr const char* kUnitTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+TEST_F(Obj, FormFeedAndVerticalTabAreWhiteSpace) {
+  // tinyobjloader alone splits words at ' ' and '\t' only: "vn\f0 0 1" was no
+  // normal to it, and the face's validated normal index read past the end.
+  const Scene s = loadObj(write("t.obj", "v 0 0 0\nv\v1 0 0\nv 0 1\f0\nvn\f0 0 1\n"
+                                         "f\f1//1 2//1\v3//1\n"));
+  expectIndicesInBounds(s);
+  ASSERT_EQ(s.triangles.size(), 1u);
+  ASSERT_EQ(s.meshNormals.size(), 1u);
+  EXPECT_TRUE(s.triangles[0].smooth());
+  expectCloseTo(s.meshNormals[0], {0, 0, 1});
+  expectUnitTriangle(s, 0);
+}
+
+TEST_F(Obj, CarriageReturnsEndLinesAsTinyobjloaderEndsThem) {
+  // "\r", "\n" and "\r\n" each end a line (an empty one between "\r\r").
+  const Scene s = loadObj(write("t.obj", "v 0 0 0\rv 1 0 0\r\nv 0 1 0\r\rf 1 2 3\r"));
+  expectIndicesInBounds(s);
+  ASSERT_EQ(s.triangles.size(), 1u);
+  expectUnitTriangle(s, 0);
+  EXPECT_EQ(s.triangles[0].origin.line, 5u);
+  EXPECT_EQ(errorsOf("v 0 0 0\rv 1 x 0\r"),
+            "DIR/t.obj:2:5: error: v: expected Y (a number) but found 'x'");
+}
+
+TEST_F(Obj, AByteOrderMarkHidesNoVertex) {
+  // tinyobjloader alone took "\xEF\xBB\xBFv" for an unknown statement and
+  // lost the first vertex: -3 then read before its vertex array, 3 after it.
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const char* face : {"f -3 -2 -1\n", "f 1 2 3\n"}) {
+    SCOPED_TRACE(face);
+    const Scene s = loadObj(write("t.obj", bom + kUnitTriangle + face));
+    expectIndicesInBounds(s);
+    ASSERT_EQ(s.meshVertices.size(), 3u);
+    ASSERT_EQ(s.triangles.size(), 1u);
+    expectUnitTriangle(s, 0);
+  }
+  // Columns count after the mark.
+  EXPECT_EQ(errorsOf(bom + "v 0 0 x\n"),
+            "DIR/t.obj:1:7: error: v: expected Z (a number) but found 'x'");
+}
+
+// The vertices of a polygon of n corners at height z, counter-clockwise seen
+// from +z: convex, a regular n-gon of radius 1; concave, a "pac-man", its
+// centre (the reflex corner, first so that even a fan from corner 0 covers it
+// right) then n - 1 points on an arc of 300 degrees.
+std::string polygonVertices(int n, bool concave, double z) {
+  std::ostringstream out;
+  out.precision(17);
+  if (concave) out << "v 0 0 " << z << "\n";
+  const int onArc = concave ? n - 1 : n;
+  const double span = concave ? glm::radians(300.0) / (n - 2) : glm::radians(360.0) / n;
+  for (int i = 0; i < onArc; ++i)
+    out << "v " << std::cos(i * span) << " " << std::sin(i * span) << " " << z << "\n";
+  return out.str();
+}
+
+double polygonArea(int n, bool concave) {
+  return concave ? 0.5 * (n - 2) * std::sin(glm::radians(300.0) / (n - 2))
+                 : 0.5 * n * std::sin(glm::radians(360.0) / n);
+}
+
+std::string faceOf(int first, int n) {
+  std::string f = "f";
+  for (int i = 0; i < n; ++i)
+    f += " " + std::to_string(first + i);
+  return f + "\n";
+}
+
+// Triangles [first, first + n - 2) cover the polygon of vertices [vertex,
+// vertex + n) at height z: only its vertices, facing +z, its whole area.
+void expectPolygon(const Scene& s, std::size_t first, std::uint32_t vertex, int n, bool concave,
+                   double z, std::uint32_t line) {
+  double area = 0.0;
+  for (std::size_t t = first; t < first + std::size_t(n) - 2; ++t) {
+    for (const std::uint32_t v : s.triangles[t].vertex) {
+      EXPECT_GE(v, vertex);
+      EXPECT_LT(v, vertex + std::uint32_t(n));
+    }
+    const std::array<Vec3, 3> p = cornersOf(s, t);
+    const Vec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
+    EXPECT_GT(normal.z, 0.0);
+    EXPECT_EQ(p[0].z, z);
+    area += 0.5 * glm::length(normal);
+    EXPECT_EQ(s.triangles[t].origin.line, line);
+  }
+  EXPECT_NEAR(area, polygonArea(n, concave), 1e-9);
+}
+
+TEST_F(Obj, FacesOf256AndMoreVerticesKeepEveryVertex) {
+  // tinyobjloader counts a face's vertices in 8 bits: 256 read as 0 (the face
+  // vanished), 300 as 44 (a sliver), and every later face was built from the
+  // wrong vertices.
+  for (const int n : {255, 256, 257, 300}) {
+    SCOPED_TRACE(n);
+    // A convex face at z 0, a triangle at z 1, a concave face at z 2, a
+    // triangle at z 3, each face after its vertices.
+    const std::string text = polygonVertices(n, false, 0) + faceOf(1, n) +
+                             "v 0 0 1\nv 1 0 1\nv 0 1 1\n" + faceOf(n + 1, 3) +
+                             polygonVertices(n, true, 2) + faceOf(n + 4, n) +
+                             "v 0 0 3\nv 1 0 3\nv 0 1 3\n" + faceOf(2 * n + 4, 3);
+    std::vector<Diagnostic> warnings;
+    const Scene s = loadObj(write("t.obj", text), &warnings);
+    expectIndicesInBounds(s);
+    EXPECT_TRUE(warnings.empty());
+    ASSERT_EQ(s.triangles.size(), 2 * std::size_t(n - 2) + 2);
+    const auto u = std::uint32_t(n);
+    expectPolygon(s, 0, 0, n, false, 0, u + 1);
+    expectUnitTriangle(s, std::size_t(n - 2), 1);
+    EXPECT_EQ(s.triangles[std::size_t(n - 2)].origin.line, u + 5);
+    expectPolygon(s, std::size_t(n - 1), u + 3, n, true, 2, 2 * u + 6);
+    expectUnitTriangle(s, 2 * std::size_t(n - 2) + 1, 3);
+    EXPECT_EQ(s.triangles.back().origin.line, 2 * u + 10);
+  }
+}
+
+TEST_F(Obj, AnObjWithoutFacesGetsAFiniteCameraAndLights) {
+  // The lights were placed around an empty box: NaN, written by `convert`
+  // as "light -nan -nan -nan inf inf inf". Now they light a unit box at the
+  // origin, as the camera frames it.
+  const double radius = 0.5 * std::sqrt(3.0), d = 10.0 * radius;
+  for (const char* text : {"", "# nothing\n", "v 1 2 3\nvn 0 0 1\n"}) {
+    SCOPED_TRACE(text);
+    std::vector<Diagnostic> warnings;
+    const Scene s = loadObj(write("t.obj", text), &warnings);
+    EXPECT_TRUE(s.triangles.empty());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].line, 1);
+    EXPECT_EQ(warnings[0].message, "the file has no faces: nothing to render");
+    expectCloseTo(s.camera.lookat, {0, 0, 0});
+    expectCloseTo(s.camera.eye, {0, 0, 1.1 * radius / std::sin(glm::radians(22.5))}, 1e-12);
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_NEAR(glm::length(s.lights[0].position), d, 1e-12);
+    EXPECT_NEAR(glm::length(s.lights[1].position), d, 1e-12);
+    expectCloseTo(s.lights[0].intensity, Color(d * d), 1e-12);
+    expectCloseTo(s.lights[1].intensity, Color(0.35 * d * d), 1e-12);
+  }
+  // Faces that are all dropped leave the scene as empty: the same box, and
+  // the warning about the dropped faces.
+  std::vector<Diagnostic> warnings;
+  const Scene s = loadObj(write("t.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"), &warnings);
+  EXPECT_TRUE(s.triangles.empty());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].message, "1 zero-area triangle was dropped");
+  ASSERT_EQ(s.lights.size(), 2u);
+  expectCloseTo(s.lights[0].intensity, Color(d * d), 1e-12);
+}
+
+TEST_F(Obj, AMeshTooLargeToLightIsAnError) {
+  // Two small triangles 2e200 apart: lights ten radii away, compensated by
+  // the distance squared, (1e201)^2.
+  EXPECT_EQ(errorsOf("v 1e200 0 0\nv 1e200 1 0\nv 1e200 0 1\nv -1e200 0 0\nv -1e200 1 0\n"
+                     "v -1e200 0 1\nf 1 2 3\nf 4 5 6\n"),
+            "DIR/t.obj:1:1: error: the mesh is too large for the default camera and lights (their "
+            "distance or intensity overflows)");
+}
+
+TEST_F(Obj, AHugeIndexIsPrintedAsWritten) {
+  const std::string obj = kUnitTriangle;
+  EXPECT_EQ(errorsOf(obj + "f 1 2 99999999999999999999999\n"),
+            "DIR/t.obj:4:7: error: f: vertex index '99999999999999999999999' is out of range (3 "
+            "'v' statements before this face)");
+  EXPECT_EQ(errorsOf(obj + "f 1 2 -0000000000000000000004\n"),
+            "DIR/t.obj:4:7: error: f: vertex index '-0000000000000000000004' is out of range (3 "
+            "'v' statements before this face)");
+  EXPECT_EQ(errorsOf(obj + "f 1 2 3//18446744073709551617\n"),
+            "DIR/t.obj:4:7: error: f: normal index '18446744073709551617' is out of range (0 "
+            "'vn' statements before this face)");
+}
+
+TEST_F(Obj, CornersCommentsAndNulBytesMeanTheSameToBothReaders) {
+  // "2//" with nothing after: tinyobjloader alone read the next corner's
+  // vertex as this one's normal (here 3, of 1 'vn'); "3//" or "3/" at the
+  // end of the line and a comment after a face were errors to it.
+  for (const char* face : {"f 1//1 2// 3//1\n", "f 1// 2// 3//\n", "f 1/ 2/ 3/\n",
+                           "f 1 2 3 # a comment\n", "f 1 2 3#a comment\n", "\tf  1\t2 3  \n"}) {
+    SCOPED_TRACE(face);
+    const Scene s = loadObj(write("t.obj", kUnitTriangle + std::string("vn 0 0 1\n") + face));
+    expectIndicesInBounds(s);
+    ASSERT_EQ(s.triangles.size(), 1u);
+    EXPECT_FALSE(s.triangles[0].smooth());
+    expectUnitTriangle(s, 0);
+  }
+  // tinyobjloader reads a line as a C string: it stopped at a NUL byte where
+  // the scan went on. One in a comment is harmless.
+  EXPECT_EQ(errorsOf(std::string("v 0 0 0") + '\0' + "5\n"),
+            "DIR/t.obj:1:8: error: unexpected NUL byte");
+  const Scene s =
+      loadObj(write("t.obj", std::string("# a") + '\0' + "b\n" + kUnitTriangle + "f 1 2 3\n"));
+  expectIndicesInBounds(s);
+  EXPECT_EQ(s.triangles.size(), 1u);
+  // A `\` continuation is not supported, by either: an error, not a
+  // different statement.
+  EXPECT_EQ(errorsOf("v 0 0 \\\n0\n"),
+            "DIR/t.obj:1:7: error: v: expected Z (a number) but found '\\'\n"
+            "DIR/t.obj:2:1: error: unknown statement '0'");
+}
+
+TEST_F(Obj, LongLinesAreReadWhole) {
+  const std::string text = "#" + std::string(1 << 20, 'x') + "\n" + kUnitTriangle +
+                           std::string(100000, ' ') + "f 1 2 3" + std::string(100000, '\t') + "\n";
+  const Scene s = loadObj(write("t.obj", text));
+  expectIndicesInBounds(s);
+  ASSERT_EQ(s.triangles.size(), 1u);
+  EXPECT_EQ(s.triangles[0].origin.line, 5u);
+}
+
+TEST_F(Obj, NumbersAreOnesTinyobjloaderReadsAlike) {
+  // Its parser knows plain decimals only: it read "0x1p0" as 0, "0e500" as
+  // NaN and a 1 after 400 zeros as 0.
+  EXPECT_EQ(errorsOf("v 0x1p0 0 0\n"),
+            "DIR/t.obj:1:3: error: v: X must be a plain decimal number (at most 64 characters, "
+            "an exponent from -300 to 300), found '0x1p0'");
+  EXPECT_EQ(errorsOf("vn 0 0e500 1\n"),
+            "DIR/t.obj:1:6: error: vn: Y must be a plain decimal number (at most 64 characters, "
+            "an exponent from -300 to 300), found '0e500'");
+  EXPECT_EQ(errorsOf("v 0 0 0." + std::string(400, '0') + "1e401\n"),
+            "DIR/t.obj:1:7: error: v: Z must be a plain decimal number (at most 64 characters, "
+            "an exponent from -300 to 300), found '0.00000000000000000000000000000000000000...'");
+  EXPECT_EQ(errorsOf("mtllib t.mtl\n", "newmtl a\nKd 1 1 1e-301\n"),
+            "DIR/t.mtl:2:8: error: Kd: B must be a plain decimal number (at most 64 characters, "
+            "an exponent from -300 to 300), found '1e-301'");
+  // It reads this spelling of the largest double as infinite: the face using
+  // it is an error, and so is the material.
+  EXPECT_EQ(errorsOf("v 17976931348623158e292 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+            "DIR/t.obj:4:1: error: f: tinyobjloader reads vertex 1 as infinite");
+  EXPECT_EQ(errorsOf("mtllib t.mtl\nusemtl a\n" + std::string(kUnitTriangle) + "f 1 2 3\n",
+                     "newmtl a\nKd 17976931348623158e292 0 0\n"),
+            "DIR/t.obj:6:1: error: usemtl: tinyobjloader reads a value of material 'a' as "
+            "infinite");
+  // What they do read, they read alike.
+  const Scene s = loadObj(write("t.obj", "v -.5 +0.5e0 1.E2\nv 1e300 0 0\nv 0 1 0\nf 1 2 3\n"));
+  expectCloseTo(s.meshVertices[0], {-0.5, 0.5, 100});
+  EXPECT_EQ(s.meshVertices[1].x, 1e300);
+}
+
+// The material the single face of `s` has.
+const Material& faceMaterial(const Scene& s) {
+  EXPECT_EQ(s.triangles.size(), 1u);
+  return s.material({PrimitiveKind::Triangle, 0});
+}
+
+TEST_F(Obj, MaterialsAreTheOnesTheScanChecked) {
+  const std::string face = std::string(kUnitTriangle) + "f 1 2 3\n";
+  const auto colourOf = [&](const std::string& obj, const std::string& mtl) {
+    write("t.mtl", mtl);
+    const Scene s = loadObj(write("t.obj", obj));
+    expectIndicesInBounds(s);
+    return faceMaterial(s).color;
+  };
+  const Color red(1, 0, 0);
+  // The name ends where the scan's words end (tinyobjloader alone took the
+  // rest of the line, comment and all), and starts after any white space.
+  for (const char* mtl : {"newmtl red # a comment\nKd 1 0 0\n", "newmtl \t red\nKd 1 0 0\n",
+                          "\xEF\xBB\xBFnewmtl red\nKd 1 0 0\n", "newmtl red\rKd\f1 0 0\r"}) {
+    SCOPED_TRACE(mtl);
+    EXPECT_EQ(colourOf("mtllib t.mtl\nusemtl red\n" + face, mtl), red);
+  }
+  // `usemtl` before its `mtllib` (tinyobjloader alone looked the name up
+  // before reading the library, and gave the default grey).
+  EXPECT_EQ(colourOf("usemtl red\nmtllib t.mtl\n" + face, "newmtl red\nKd 1 0 0\n"), red);
+  // Every library of an `mtllib` (tinyobjloader alone stopped after the
+  // first it could read).
+  write("b.mtl", "newmtl blue\nKd 0 0 1\n");
+  EXPECT_EQ(colourOf("mtllib t.mtl b.mtl\nusemtl blue\n" + face, "newmtl red\nKd 1 0 0\n"),
+            Color(0, 0, 1));
+  // The first definition of a name wins, `illum` included: here none is
+  // given, so model 2 and the highlight of Ks 1.
+  write("t.mtl", "newmtl a\nKs 1 1 1\nnewmtl a\nKs 0 0 0\nillum 1\n");
+  const Scene s = loadObj(write("t.obj", "mtllib t.mtl\nusemtl a\n" + face));
+  EXPECT_EQ(faceMaterial(s).ksr, 1.0);
 }
 
 } // namespace

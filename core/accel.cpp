@@ -37,8 +37,12 @@ bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, In
   switch (ref.kind) {
   case PrimitiveKind::Sphere: return intersect(scene.spheres[ref.index], ray, range, t);
   case PrimitiveKind::Ellipsoid: return intersect(scene.ellipsoids[ref.index], ray, range, t);
-  case PrimitiveKind::Polygon:
-    return intersect(scene.polygons[ref.index], scene.polygonVertices.data(), ray, range, t);
+  case PrimitiveKind::Polygon: {
+    const Polygon& p = scene.polygons[ref.index];
+    const PolygonEdgeIndex* edges =
+        p.edgeIndex == Polygon::kNoEdgeIndex ? nullptr : &scene.polygonEdgeIndices[p.edgeIndex];
+    return intersect(p, scene.polygonVertices.data(), edges, ray, range, t);
+  }
   case PrimitiveKind::Cone: return intersect(scene.cones[ref.index], ray, range, t);
   case PrimitiveKind::Triangle:
     return intersect(scene.triangles[ref.index], scene.meshVertices.data(), ray, range, t);

@@ -61,7 +61,12 @@ bool intersect(const Ellipsoid& e, const Ray& ray, Interval range, double& t) {
   return nearestQuadricRoot(o, d, 1.0, range, t);
 }
 
-bool intersect(const Polygon& p, const Vec3* vertices, const Ray& ray, Interval range, double& t) {
+ProjectedAxes polygonAxes(const Polygon& p) {
+  return {kProjectedAxes[p.dropAxis][0], kProjectedAxes[p.dropAxis][1]};
+}
+
+bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* edges,
+               const Ray& ray, Interval range, double& t) {
   const double denom = glm::dot(p.normal, ray.dir);
   if (denom == 0.0) return false; // parallel, or lying in the plane: no area is hit
   const double tp = (p.planeOffset - glm::dot(p.normal, ray.origin)) / denom;
@@ -80,17 +85,17 @@ bool intersect(const Polygon& p, const Vec3* vertices, const Ray& ray, Interval 
   const Vec3 point = ray.at(tp);
   const double qu = point[uAxis], qv = point[vAxis];
   const Vec3* v = vertices + p.firstVertex;
-  double au = v[p.vertexCount - 1][uAxis], av = v[p.vertexCount - 1][vAxis];
   bool inside = false;
-  for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
-    const double bu = v[i][uAxis], bv = v[i][vAxis];
-    const bool aLower = av < bv;
-    const double loU = aLower ? au : bu, loV = aLower ? av : bv;
-    const double hiU = aLower ? bu : au, hiV = aLower ? bv : av;
-    const double x = loU + (qv - loV) * (hiU - loU) / (hiV - loV);
-    inside ^= ((av > qv) != (bv > qv)) & (qu < x);
-    au = bu;
-    av = bv;
+  if (edges != nullptr) {
+    inside = edges->contains(v, p.vertexCount, uAxis, vAxis, qu, qv);
+  } else {
+    double au = v[p.vertexCount - 1][uAxis], av = v[p.vertexCount - 1][vAxis];
+    for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
+      const double bu = v[i][uAxis], bv = v[i][vAxis];
+      inside ^= ((av > qv) != (bv > qv)) & (qu < edgeCrossingU(au, av, bu, bv, qv));
+      au = bu;
+      av = bv;
+    }
   }
   if (inside) t = tp;
   return inside;

@@ -3,6 +3,7 @@
 // two-sided here; which side was hit is the tracer's entering/leaving test.
 #pragma once
 
+#include "core/polygon_edges.h"
 #include "core/primitives.h"
 
 #include <optional>
@@ -13,7 +14,21 @@ namespace prism {
 
 bool intersect(const Sphere& s, const Ray& ray, Interval range, double& t);
 bool intersect(const Ellipsoid& e, const Ray& ray, Interval range, double& t);
-bool intersect(const Polygon& p, const Vec3* vertices, const Ray& ray, Interval range, double& t);
+// `edges` is the polygon's edge index, or null to test every edge (the answer
+// is the same; the index makes it logarithmic in the number of vertices).
+bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* edges,
+               const Ray& ray, Interval range, double& t);
+inline bool intersect(const Polygon& p, const Vec3* vertices, const Ray& ray, Interval range,
+                      double& t) {
+  return intersect(p, vertices, nullptr, ray, range, t);
+}
+
+// The axes a polygon keeps in its 2D projection, in the order that keeps
+// its orientation.
+struct ProjectedAxes {
+  int u, v;
+};
+ProjectedAxes polygonAxes(const Polygon& p);
 
 // Unit outward normals at a point on the surface.
 Vec3 normalAt(const Sphere& s, const Vec3& point);

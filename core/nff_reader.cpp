@@ -248,8 +248,8 @@ void NffReader::view(const Token& keyword) {
       Arg a[3];
       if (!numbers(kWords[which], {"X", "Y", "Z"}, a, valid) || !valid) continue;
       if (which <= 1 && !withinModelRange(vec(a))) {
-        report(a[0].token, std::string(kWords[which]) + ": the point must be within +-" +
-                               kMaxCoordinateText);
+        report(a[0].token,
+               std::string(kWords[which]) + ": the point must be within +-" + kMaxCoordinateText);
         continue;
       }
       (which == 0 ? camera.eye : which == 1 ? camera.lookat : camera.up) = vec(a);
@@ -479,14 +479,7 @@ void NffReader::polygon(const Token& keyword, bool patch) {
       }
       return;
     }
-    Polygon p = makePolygon(points);
-    p.firstVertex = std::uint32_t(scene_.polygonVertices.size());
-    p.material = material();
-    p.origin = origin(keyword);
-    scene_.polygonVertices.insert(scene_.polygonVertices.end(), points.begin(), points.end());
-    scene_.polygons.push_back(p);
-    scene_.groups[0].primitives.push_back(
-        {PrimitiveKind::Polygon, std::uint32_t(scene_.polygons.size() - 1)});
+    addPolygon(scene_, points, material(), origin(keyword), 0);
     return;
   }
   const auto firstVertex = std::uint32_t(scene_.meshVertices.size());

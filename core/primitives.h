@@ -59,6 +59,10 @@ struct Polygon {
   Vec3 normal{0.0, 0.0, 1.0}; // unit, outward by the right-hand rule
   double planeOffset = 0.0;   // dot(normal, x) for points x on the plane
   std::uint8_t dropAxis = 2;  // the axis dropped to test containment in 2D
+  // Into Scene::polygonEdgeIndices for a polygon of many vertices (see
+  // core/polygon_edges.h), or kNoEdgeIndex.
+  std::uint32_t edgeIndex = kNoEdgeIndex;
+  static constexpr std::uint32_t kNoEdgeIndex = ~std::uint32_t(0);
   std::uint32_t material = 0;
   Origin origin;
 };

@@ -46,19 +46,41 @@ std::string Scene::describe(PrimitiveRef ref) const {
   text << kNames[int(ref.kind)] << " #" << ref.index;
   const Origin o = origin(ref);
   if (o.file < files.size())
-    text << " (" << std::filesystem::path(files[o.file]).filename().string() << ":" << o.line << ")";
+    text << " (" << std::filesystem::path(files[o.file]).filename().string() << ":" << o.line
+         << ")";
   return text.str();
+}
+
+PrimitiveRef addPolygon(Scene& scene, std::span<const Vec3> vertices, std::uint32_t material,
+                        Origin origin, std::uint32_t group) {
+  Polygon p = makePolygon(vertices);
+  p.firstVertex = std::uint32_t(scene.polygonVertices.size());
+  p.material = material;
+  p.origin = origin;
+  if (p.vertexCount >= kIndexedPolygonVertices) {
+    p.edgeIndex = std::uint32_t(scene.polygonEdgeIndices.size());
+    scene.polygonEdgeIndices.emplace_back(vertices, polygonAxes(p).u, polygonAxes(p).v);
+  }
+  scene.polygonVertices.insert(scene.polygonVertices.end(), vertices.begin(), vertices.end());
+  scene.polygons.push_back(p);
+  const PrimitiveRef ref{PrimitiveKind::Polygon, std::uint32_t(scene.polygons.size() - 1)};
+  scene.groups[group].primitives.push_back(ref);
+  return ref;
 }
 
 std::vector<PrimitiveRef> Scene::allPrimitives() const {
   std::vector<PrimitiveRef> refs;
   refs.reserve(primitiveCount());
-  for (std::uint32_t i = 0; i < spheres.size(); ++i) refs.push_back({PrimitiveKind::Sphere, i});
+  for (std::uint32_t i = 0; i < spheres.size(); ++i)
+    refs.push_back({PrimitiveKind::Sphere, i});
   for (std::uint32_t i = 0; i < ellipsoids.size(); ++i)
     refs.push_back({PrimitiveKind::Ellipsoid, i});
-  for (std::uint32_t i = 0; i < polygons.size(); ++i) refs.push_back({PrimitiveKind::Polygon, i});
-  for (std::uint32_t i = 0; i < cones.size(); ++i) refs.push_back({PrimitiveKind::Cone, i});
-  for (std::uint32_t i = 0; i < triangles.size(); ++i) refs.push_back({PrimitiveKind::Triangle, i});
+  for (std::uint32_t i = 0; i < polygons.size(); ++i)
+    refs.push_back({PrimitiveKind::Polygon, i});
+  for (std::uint32_t i = 0; i < cones.size(); ++i)
+    refs.push_back({PrimitiveKind::Cone, i});
+  for (std::uint32_t i = 0; i < triangles.size(); ++i)
+    refs.push_back({PrimitiveKind::Triangle, i});
   return refs;
 }
 

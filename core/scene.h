@@ -4,6 +4,7 @@
 #include "core/camera.h"
 #include "core/cone.h"
 #include "core/material.h"
+#include "core/polygon_edges.h"
 #include "core/primitives.h"
 #include "core/triangle.h"
 
@@ -38,6 +39,7 @@ struct Scene {
   std::vector<Ellipsoid> ellipsoids;
   std::vector<Polygon> polygons;
   std::vector<Vec3> polygonVertices;
+  std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices
   std::vector<Cone> cones;
   std::vector<Triangle> triangles;
   std::vector<Vec3> meshVertices; // shared by triangles (Triangle::vertex)
@@ -57,5 +59,11 @@ struct Scene {
   // Every primitive, in the order of the kinds, for brute-force queries.
   std::vector<PrimitiveRef> allPrimitives() const;
 };
+
+// Adds a polygon (whose vertices passed polygonProblem) to the scene and to
+// group `group`, with an edge index when it has many vertices. Every reader
+// and generator makes polygons through it.
+PrimitiveRef addPolygon(Scene& scene, std::span<const Vec3> vertices, std::uint32_t material,
+                        Origin origin, std::uint32_t group);
 
 } // namespace prism

@@ -50,16 +50,9 @@ std::uint32_t addMaterial(Scene& scene, const Color& color, double kdr, double k
   return std::uint32_t(scene.materials.size() - 1);
 }
 
-void addPolygon(Scene& scene, const std::vector<Vec3>& vertices, std::uint32_t material,
-                std::uint32_t group) {
-  if (polygonProblem(vertices)) return;
-  Polygon p = makePolygon(vertices);
-  p.firstVertex = std::uint32_t(scene.polygonVertices.size());
-  p.material = material;
-  scene.polygonVertices.insert(scene.polygonVertices.end(), vertices.begin(), vertices.end());
-  scene.polygons.push_back(p);
-  scene.groups[group].primitives.push_back(
-      {PrimitiveKind::Polygon, std::uint32_t(scene.polygons.size() - 1)});
+void addPolygonIfValid(Scene& scene, const std::vector<Vec3>& vertices, std::uint32_t material,
+                       std::uint32_t group) {
+  if (!polygonProblem(vertices)) addPolygon(scene, vertices, material, Origin{}, group);
 }
 
 std::uint32_t addGroup(Scene& scene, std::uint32_t parent) {
@@ -83,7 +76,7 @@ Scene makeSphereflake(std::size_t spheres) {
   scene.lights.push_back({Vec3(-5, 3, 4), Color(12.0)});
   const std::uint32_t ground = addMaterial(scene, Color(0.6, 0.6, 0.55), 0.8, 0.0, 1.0);
   const std::uint32_t flake = addMaterial(scene, Color(0.85, 0.7, 0.45), 0.5, 0.4, 40.0);
-  addPolygon(scene, {{-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4}}, ground, 0);
+  addPolygonIfValid(scene, {{-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4}}, ground, 0);
 
   // The 9 child directions in a sphere's own frame (z up): 6 around the
   // equator and 3 above, as in the classic flake.
@@ -192,7 +185,7 @@ Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::
   std::vector<Vec3> v(3);
   for (const SoupTriangle& t : soup) {
     v.assign(t.vertices.begin(), t.vertices.end());
-    addPolygon(scene, v, material, 0);
+    addPolygonIfValid(scene, v, material, 0);
   }
   return scene;
 }

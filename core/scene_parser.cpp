@@ -654,13 +654,7 @@ void Parser::polygon(Command& c) {
     error(c.keyword, "polygon: " + *problem);
     return;
   }
-  Polygon p = makePolygon(vertices_);
-  p.firstVertex = std::uint32_t(scene_.polygonVertices.size());
-  p.material = currentMaterial();
-  p.origin = origin(c);
-  scene_.polygonVertices.insert(scene_.polygonVertices.end(), vertices_.begin(), vertices_.end());
-  scene_.polygons.push_back(p);
-  addPrimitive(PrimitiveKind::Polygon, scene_.polygons.size() - 1);
+  addPolygon(scene_, vertices_, currentMaterial(), origin(c), group_);
 }
 
 void Parser::cone(Command& c) {

@@ -63,14 +63,7 @@ inline PrimitiveRef addEllipsoid(Scene& scene, const Mat3& linear, const Vec3& o
 inline PrimitiveRef addPolygon(Scene& scene, const std::vector<Vec3>& vertices,
                                std::uint32_t material, std::uint32_t group = 0) {
   if (polygonProblem(vertices)) throw std::invalid_argument("bad test polygon");
-  Polygon p = makePolygon(vertices);
-  p.firstVertex = std::uint32_t(scene.polygonVertices.size());
-  p.material = material;
-  scene.polygonVertices.insert(scene.polygonVertices.end(), vertices.begin(), vertices.end());
-  scene.polygons.push_back(p);
-  const PrimitiveRef ref{PrimitiveKind::Polygon, std::uint32_t(scene.polygons.size() - 1)};
-  scene.groups[group].primitives.push_back(ref);
-  return ref;
+  return prism::addPolygon(scene, vertices, material, Origin{}, group);
 }
 
 // The square [-half, half]^2 in the plane z = height, facing +z (or -z when

@@ -487,13 +487,17 @@ void NffReader::polygon(const Token& keyword, bool patch) {
   scene_.meshVertices.insert(scene_.meshVertices.end(), points.begin(), points.end());
   scene_.meshNormals.insert(scene_.meshNormals.end(), normals.begin(), normals.end());
   std::size_t dropped = 0;
-  for (const std::array<std::uint32_t, 3>& tri : triangulate(points)) {
+  const Triangulation triangulation = triangulatePolygon(points);
+  for (const std::array<std::uint32_t, 3>& tri : triangulation.triangles) {
     const std::array<std::uint32_t, 3> v{firstVertex + tri[0], firstVertex + tri[1],
                                          firstVertex + tri[2]};
     const std::array<std::uint32_t, 3> n{firstNormal + tri[0], firstNormal + tri[1],
                                          firstNormal + tri[2]};
     if (!addMeshTriangle(scene_, v, &n, material(), origin(keyword))) ++dropped;
   }
+  // A patch of zero area is not simple either; it is reported as dropped.
+  if (!triangulation.simple && dropped < triangulation.triangles.size())
+    warn(keyword, "pp: " + notSimpleWarning(1, "patch"));
   if (dropped > 0) {
     warn(keyword, "pp: " + std::to_string(dropped) +
                       (dropped == 1 ? " triangle has" : " triangles have") + " zero area; dropped");

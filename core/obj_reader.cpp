@@ -1,6 +1,7 @@
 #include "core/obj_reader.h"
 
 #include "core/import_common.h"
+#include "core/model_range.h"
 #include "core/obj_scan.h"
 #include "core/scene_text.h"
 #include "core/triangulate.h"
@@ -285,6 +286,7 @@ public:
   }
 
   std::size_t dropped() const { return dropped_; }
+  std::size_t notSimple() const { return notSimple_; }
 
 private:
   void addFace(std::span<const tinyobj::index_t> corners, const ObjFace& face,
@@ -296,7 +298,9 @@ private:
       points_.push_back(vertex(ix, face));
       smooth = smooth && ix.normal_index >= 0 && usable_[std::size_t(ix.normal_index)];
     }
-    for (const std::array<std::uint32_t, 3>& tri : triangulate(points_)) {
+    const Triangulation triangulation = triangulatePolygon(points_);
+    const std::size_t droppedBefore = dropped_;
+    for (const std::array<std::uint32_t, 3>& tri : triangulation.triangles) {
       std::array<std::uint32_t, 3> v, n;
       for (std::size_t c = 0; c < 3; ++c) {
         if (tri[c] >= corners.size()) internalError(file_, face.line, "a triangle out of range");
@@ -307,6 +311,9 @@ private:
       const Origin origin{0, face.line};
       if (!addMeshTriangle(scene_, v, smooth ? &n : nullptr, material, origin, group)) ++dropped_;
     }
+    // A face of zero area is not simple either; it is reported as dropped.
+    const bool keptSome = dropped_ - droppedBefore < triangulation.triangles.size();
+    if (!triangulation.simple && keptSome) ++notSimple_;
   }
 
   // The corner's vertex, its vertex and normal indices checked.
@@ -321,6 +328,13 @@ private:
                                    "f: tinyobjloader reads vertex " +
                                        std::to_string(ix.vertex_index + 1) + " as infinite"}});
     }
+    if (!withinModelRange(p)) {
+      throw SceneError({Diagnostic{file_, int(face.line), 1,
+                                   "f: vertex " + std::to_string(ix.vertex_index + 1) +
+                                       " lies outside the supported range: coordinates must be "
+                                       "within +-" +
+                                       kMaxCoordinateText}});
+    }
     return p;
   }
 
@@ -331,6 +345,7 @@ private:
   const std::string& file_;
   std::size_t face_ = 0; // into scan_.faces
   std::size_t dropped_ = 0;
+  std::size_t notSimple_ = 0; // faces whose triangles are a best effort
   std::vector<Vec3> points_;
 };
 
@@ -381,6 +396,9 @@ Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnin
       warnings->push_back({name, 1, 1,
                            std::to_string(faces.dropped()) + " zero-area triangle" +
                                (faces.dropped() == 1 ? " was" : "s were") + " dropped"});
+    }
+    if (faces.notSimple() > 0) {
+      warnings->push_back({name, 1, 1, notSimpleWarning(faces.notSimple(), "face")});
     }
     if (scan.faces.empty()) {
       warnings->push_back({name, 1, 1, "the file has no faces: nothing to render"});

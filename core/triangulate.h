@@ -34,6 +34,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace prism {
@@ -56,6 +57,10 @@ struct Triangulation {
   // areas could overflow). The triangles are then a best effort.
   bool simple = true;
 };
+
+// The warning a reader gives for `count` polygons of kind `what` ("face")
+// whose triangulation was not simple.
+std::string notSimpleWarning(std::size_t count, const std::string& what);
 
 // Triangulates `points` (a closed polygon; the last vertex joins the first).
 // Fewer than 3 points give no triangles, 3 give {0, 1, 2}. `earClippingLimit`

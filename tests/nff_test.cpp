@@ -180,6 +180,18 @@ TEST(Nff, DegeneratePolygonsAreDroppedWithAWarning) {
   EXPECT_EQ(warnings[1].message, "pp: 1 triangle has zero area; dropped");
 }
 
+TEST(Nff, PatchesThatAreNotSimplePolygonsAreReported) {
+  std::vector<Diagnostic> warnings;
+  const Scene s = parseNff("v from 0 0 5 at 0 0 0 up 0 1 0 angle 45 resolution 8 8\n"
+                           "pp 4 0 0 0 0 0 1  1 1 0 0 0 1  1 0 0 0 0 1  0 1 0 0 0 1\n",
+                           "t.nff", &warnings);
+  EXPECT_EQ(s.triangles.size(), 2u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].line, 2);
+  EXPECT_EQ(warnings[0].message, "pp: 1 patch is not a simple polygon (edges cross or touch, or a "
+                                 "vertex repeats): its triangles are a best effort");
+}
+
 TEST(Nff, NoViewUsesTheDefaultCameraWithAWarning) {
   std::vector<Diagnostic> warnings;
   const Scene s = parseNff("s 0 0 0 1\n", "t.nff", &warnings);

@@ -255,6 +255,21 @@ TEST_F(Obj, ZeroNormalsMakeAFlatFaceAndZeroAreaFacesAreDropped) {
   EXPECT_EQ(warnings[0].message, "1 zero-area triangle was dropped");
 }
 
+// A face whose edges cross cannot be tiled by triangles; it was triangulated
+// silently. Now it still is (best effort, never beyond its vertices), with a
+// warning that counts such faces.
+TEST_F(Obj, FacesThatAreNotSimplePolygonsAreReported) {
+  std::vector<Diagnostic> warnings;
+  const Scene s = loadObj(write("t.obj", "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\n"
+                                         "f 1 2 3 4\nf 1 3 4 2\nf 1 5 2\n"),
+                          &warnings);
+  expectIndicesInBounds(s);
+  EXPECT_EQ(s.triangles.size(), 5u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].message, "2 faces are not simple polygons (edges cross or touch, or a "
+                                 "vertex repeats): their triangles are a best effort");
+}
+
 TEST_F(Obj, Errors) {
   EXPECT_EQ(errorsOf("v 1 2 x\n"), "DIR/t.obj:1:7: error: v: expected Z (a number) but found 'x'");
   EXPECT_EQ(errorsOf("v 1 2\n"),
@@ -489,13 +504,23 @@ TEST_F(Obj, AnObjWithoutFacesGetsAFiniteCameraAndLights) {
   expectCloseTo(s.lights[0].intensity, Color(d * d), 1e-12);
 }
 
-TEST_F(Obj, AMeshTooLargeToLightIsAnError) {
-  // Two small triangles 2e200 apart: lights ten radii away, compensated by
-  // the distance squared, (1e201)^2.
+// Coordinates are kept within +-1e30, as in every reader (core/model_range.h):
+// beyond, the default lights' 1/r^2 compensation and the geometry's squares
+// could overflow. Two triangles 2e200 apart were lit by infinite lights.
+TEST_F(Obj, AMeshBeyondTheSupportedRangeIsAnError) {
   EXPECT_EQ(errorsOf("v 1e200 0 0\nv 1e200 1 0\nv 1e200 0 1\nv -1e200 0 0\nv -1e200 1 0\n"
                      "v -1e200 0 1\nf 1 2 3\nf 4 5 6\n"),
-            "DIR/t.obj:1:1: error: the mesh is too large for the default camera and lights (their "
-            "distance or intensity overflows)");
+            "DIR/t.obj:7:1: error: f: vertex 1 lies outside the supported range: coordinates must "
+            "be within +-1e30");
+  // A vertex no face uses may lie anywhere.
+  EXPECT_EQ(errorsOf(std::string("v 1e300 0 0\n") + kUnitTriangle + "f 2 3 4\n"), "no error");
+  // At the limit itself, the lights are finite.
+  const Scene s = loadObj(write("t.obj", "v 1e30 0 0\nv 1e30 1 0\nv 1e30 0 1\nv -1e30 0 0\n"
+                                         "v -1e30 1 0\nv -1e30 0 1\nf 1 2 3\nf 4 5 6\n"));
+  for (const Light& light : s.lights) {
+    EXPECT_TRUE(isFinite(light.position));
+    EXPECT_TRUE(isFinite(light.intensity));
+  }
 }
 
 TEST_F(Obj, AHugeIndexIsPrintedAsWritten) {
@@ -571,10 +596,13 @@ TEST_F(Obj, NumbersAreOnesTinyobjloaderReadsAlike) {
                      "newmtl a\nKd 17976931348623158e292 0 0\n"),
             "DIR/t.obj:6:1: error: usemtl: tinyobjloader reads a value of material 'a' as "
             "infinite");
-  // What they do read, they read alike.
-  const Scene s = loadObj(write("t.obj", "v -.5 +0.5e0 1.E2\nv 1e300 0 0\nv 0 1 0\nf 1 2 3\n"));
+  // What they do read, they read alike (a vertex no face uses may lie beyond
+  // the supported range).
+  const Scene s =
+      loadObj(write("t.obj", "v -.5 +0.5e0 1.E2\nv 1e30 0 0\nv 0 1 0\nf 1 2 3\nv 1e300 0 0\n"));
   expectCloseTo(s.meshVertices[0], {-0.5, 0.5, 100});
-  EXPECT_EQ(s.meshVertices[1].x, 1e300);
+  EXPECT_EQ(s.meshVertices[1].x, 1e30);
+  EXPECT_EQ(s.meshVertices[3].x, 1e300);
 }
 
 // The material the single face of `s` has.

@@ -1,0 +1,171 @@
+// `prism convert`'s promise (core/scene_writer.h): the .sc text written for a
+// scene reads back as the same scene. The input is read as .sc, or as NFF or
+// OBJ when its first line is `#!nff` or `#!obj` (a comment in all three);
+// whatever loads is written with writeScene, parsed back with parseScene and
+// compared. Any difference, or text that does not read back, is a crash.
+#include "core/nff_reader.h"
+#include "core/obj_reader.h"
+#include "core/scene_writer.h"
+#include "fuzz/fuzz_check.h"
+
+#include <algorithm>
+#include <optional>
+#include <sstream>
+
+using namespace prism;
+
+namespace {
+
+std::string num(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+std::string num(const Vec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+
+// The first difference between the original and the scene read back.
+class Comparison {
+public:
+  template <typename T> void same(const char* what, const T& a, const T& b) {
+    if (!problem_ && !(a == b)) problem_ = std::string(what) + " differ";
+  }
+  void same(const char* what, const Vec3& a, const Vec3& b) {
+    if (!problem_ && a != b) problem_ = std::string(what) + ": " + num(a) + " vs " + num(b);
+  }
+  // For what the writer must decompose (ellipsoids, elliptic cones) or the
+  // reader normalises again (vertex normals): equal up to round-off.
+  void near(const char* what, const Vec3& a, const Vec3& b, double scale) {
+    const double tolerance = 1e-9 * std::max({maxAbsComponent(a), maxAbsComponent(b), scale});
+    if (!problem_ && !(maxAbsComponent(a - b) <= tolerance)) {
+      problem_ = std::string(what) + ": " + num(a) + " vs " + num(b);
+    }
+  }
+  const std::optional<std::string>& problem() const { return problem_; }
+
+private:
+  std::optional<std::string> problem_;
+};
+
+// Primitives in the order the writer visits them (a group's own, then its
+// sub-groups), which is the file order of the text it writes and so the order
+// in which parseScene stores them.
+void writerOrder(const Scene& scene, std::uint32_t group, std::vector<PrimitiveRef>& out) {
+  const Group& g = scene.groups[group];
+  out.insert(out.end(), g.primitives.begin(), g.primitives.end());
+  for (const std::uint32_t child : g.children) {
+    writerOrder(scene, child, out);
+  }
+}
+
+void compare(const Scene& a, const Scene& b, Comparison& c) {
+  c.same("resolutions", std::pair(a.width, a.height), std::pair(b.width, b.height));
+  c.same("eyes", a.camera.eye, b.camera.eye);
+  c.same("lookats", a.camera.lookat, b.camera.lookat);
+  c.same("ups", a.camera.up, b.camera.up);
+  c.same("fovs", a.camera.fov, b.camera.fov);
+  c.same("backgrounds", a.background, b.background);
+  c.same("ambients", a.ambient, b.ambient);
+  c.same("light counts", a.lights.size(), b.lights.size());
+  for (std::size_t i = 0; i < std::min(a.lights.size(), b.lights.size()); ++i) {
+    c.same("light positions", a.lights[i].position, b.lights[i].position);
+    c.same("light intensities", a.lights[i].intensity, b.lights[i].intensity);
+  }
+  c.same("sphere counts", a.spheres.size(), b.spheres.size());
+  c.same("ellipsoid counts", a.ellipsoids.size(), b.ellipsoids.size());
+  c.same("polygon counts", a.polygons.size(), b.polygons.size());
+  c.same("cone counts", a.cones.size(), b.cones.size());
+  c.same("triangle counts", a.triangles.size(), b.triangles.size());
+  if (c.problem()) return;
+
+  std::vector<PrimitiveRef> order;
+  writerOrder(a, 0, order);
+  c.same("primitive counts (some primitive is in no group)", order.size(), a.primitiveCount());
+  std::array<std::uint32_t, 5> next{}; // per kind, the next index in b
+  for (const PrimitiveRef& ra : order) {
+    if (c.problem()) return;
+    const PrimitiveRef rb{ra.kind, next[std::size_t(ra.kind)]++};
+    c.same("materials", a.material(ra), b.material(rb));
+    const Aabb boxA = a.bounds(ra), boxB = b.bounds(rb);
+    const double size = maxAbsComponent(boxA.hi - boxA.lo);
+    switch (ra.kind) {
+    case PrimitiveKind::Sphere:
+      c.same("sphere centres", a.spheres[ra.index].center, b.spheres[rb.index].center);
+      c.same("sphere radii", a.spheres[ra.index].radius, b.spheres[rb.index].radius);
+      break;
+    case PrimitiveKind::Polygon: {
+      const Polygon& pa = a.polygons[ra.index];
+      const Polygon& pb = b.polygons[rb.index];
+      c.same("polygon vertex counts", pa.vertexCount, pb.vertexCount);
+      for (std::uint32_t i = 0; i < std::min(pa.vertexCount, pb.vertexCount); ++i) {
+        c.same("polygon vertices", a.polygonVertices[pa.firstVertex + i],
+               b.polygonVertices[pb.firstVertex + i]);
+      }
+      break;
+    }
+    case PrimitiveKind::Triangle: {
+      const Triangle& ta = a.triangles[ra.index];
+      const Triangle& tb = b.triangles[rb.index];
+      c.same("triangle smoothness", ta.smooth(), tb.smooth());
+      for (std::size_t i = 0; i < 3 && !c.problem(); ++i) {
+        c.same("triangle vertices", a.meshVertices[ta.vertex[i]], b.meshVertices[tb.vertex[i]]);
+        if (ta.smooth() && tb.smooth()) {
+          c.near("vertex normals", a.meshNormals[ta.normal[i]], b.meshNormals[tb.normal[i]], 1.0);
+        }
+      }
+      break;
+    }
+    case PrimitiveKind::Ellipsoid:
+    case PrimitiveKind::Cone:
+      c.near("ellipsoid or cone bounds (lo)", boxA.lo, boxB.lo, size);
+      c.near("ellipsoid or cone bounds (hi)", boxA.hi, boxB.hi, size);
+      break;
+    }
+  }
+}
+
+std::optional<Scene> load(std::string_view text) {
+  try {
+    if (text.starts_with("#!nff\n")) return parseNff(text, "fuzz.nff");
+    if (text.starts_with("#!obj\n")) {
+      if (fuzz::mtllibLeavesSandbox(text)) return std::nullopt;
+      return loadObj(fuzz::stageObj(text));
+    }
+    if (fuzz::includeLeavesSandbox(text)) return std::nullopt;
+    return parseScene(text, (fuzz::sandbox() / "main.sc").string());
+  } catch (const SceneError&) {
+    return std::nullopt; // the readers' own targets check rejections
+  }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  fuzz::sandbox();
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view input = fuzz::asText(data, size);
+  const std::optional<Scene> scene = load(input);
+  if (!scene) return 0;
+  std::ostringstream out;
+  writeScene(out, *scene, "written by the round-trip fuzzer\nsecond line");
+  const std::string written = out.str();
+  Scene back;
+  try {
+    back = parseScene(written, (fuzz::sandbox() / "written.sc").string());
+  } catch (const SceneError& e) {
+    fuzz::fail(std::string("the written scene does not read back:\n") + e.what() +
+                   "\n==prism-fuzz== written text:\n" + written.substr(0, 4096),
+               input);
+  }
+  Comparison c;
+  compare(*scene, back, c);
+  if (c.problem()) {
+    fuzz::fail("the scene read back differs: " + *c.problem() + "\n==prism-fuzz== written text:\n" +
+                   written.substr(0, 4096),
+               input);
+  }
+  return 0;
+}

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace prism::fuzz {
 
 namespace fs = std::filesystem;
@@ -132,6 +134,23 @@ void stageScParts(const fs::path& dir) {
   fs::create_directory(dir / "folder");
 }
 
+// A process that crashed (or was killed) never removed its sandbox, and
+// -minimize_crash crashes thousands of times. Sandboxes are named for their
+// process, so each new one removes those whose process no longer exists.
+void removeStaleSandboxes(const fs::path& parent) {
+  const std::string prefix = "prism-fuzz-";
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(parent, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix)) continue;
+    const std::string pid =
+        name.substr(prefix.size(), name.find('-', prefix.size()) - prefix.size());
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (fs::exists("/proc/" + pid, ec)) continue;
+    fs::remove_all(entry.path(), ec);
+  }
+}
+
 } // namespace
 
 void fail(const std::string& what, std::string_view input) {
@@ -162,7 +181,10 @@ void renderChecks(const Scene& scene) {
 
 const fs::path& sandbox() {
   static const fs::path dir = [] {
-    std::string pattern = (fs::temp_directory_path() / "prism-fuzz-XXXXXX").string();
+    const fs::path parent = fs::temp_directory_path();
+    removeStaleSandboxes(parent);
+    const std::string name = "prism-fuzz-" + std::to_string(::getpid()) + "-XXXXXX";
+    std::string pattern = (parent / name).string();
     if (::mkdtemp(pattern.data()) == nullptr) fail("cannot create a directory in TMPDIR");
     stageScParts(pattern);
     return fs::path(pattern);

@@ -26,9 +26,10 @@ namespace prism::fuzz {
 // whatever the scene's resolution: an execution must stay cheap.
 void renderChecks(const Scene& scene);
 
-// A private, empty-at-start directory for this process (under TMPDIR),
-// removed at exit. Readers that take paths (OBJ) or follow includes (.sc) get
-// their files here, so a run never depends on what else is on the disk.
+// A private, empty-at-start directory for this process (TMPDIR/prism-fuzz-PID-
+// XXXXXX), removed at exit, and by the next process if this one crashes. Readers that take paths
+// (OBJ) or follow includes (.sc) get their files here, so a run never depends on what else is on
+// the disk.
 const std::filesystem::path& sandbox();
 
 // Writes `bytes` to `path` (replacing it); removes it when `bytes` is null.

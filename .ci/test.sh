@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds Prism with its tests and runs the whole suite
 # twice: an optimised build, then a build under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Exits non-zero if anything fails.
+# UndefinedBehaviorSanitizer; then fuzzes every reader for a minute each.
+# Exits non-zero if anything fails.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/.ci/install-deps.sh"
@@ -14,3 +15,6 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 bash "$root/.ci/build.sh" "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$root/build-sanitize" --output-on-failure -j"$(nproc)"
+
+echo "== Fuzzing the readers for a bounded time (60 s per target; docs/fuzzing.md)"
+bash "$root/.ci/fuzz.sh" 60

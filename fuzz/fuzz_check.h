@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/scene.h"
+#include "core/scene_parser.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +26,21 @@ namespace prism::fuzz {
 // disagree (core/accel.h promises the very same hits). The image is small
 // whatever the scene's resolution: an execution must stay cheap.
 void renderChecks(const Scene& scene);
+
+// One execution of a reader target: `load()` reads the input into a Scene.
+// A rejection must come with at least one located diagnostic; an accepted
+// scene goes through renderChecks.
+template <class Load> int checkReader(std::string_view input, Load load) {
+  Scene scene;
+  try {
+    scene = load();
+  } catch (const SceneError& e) {
+    if (e.diagnostics().empty()) fail("SceneError without a diagnostic", input);
+    return 0;
+  }
+  renderChecks(scene);
+  return 0;
+}
 
 // A private, empty-at-start directory for this process (TMPDIR/prism-fuzz-PID-
 // XXXXXX), removed at exit, and by the next process if this one crashes. Readers that take paths

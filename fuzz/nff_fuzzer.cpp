@@ -8,13 +8,5 @@ using namespace prism;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text = fuzz::asText(data, size);
   std::vector<Diagnostic> warnings;
-  Scene scene;
-  try {
-    scene = parseNff(text, "fuzz.nff", &warnings);
-  } catch (const SceneError& e) {
-    if (e.diagnostics().empty()) fuzz::fail("SceneError without a diagnostic", text);
-    return 0;
-  }
-  fuzz::renderChecks(scene);
-  return 0;
+  return fuzz::checkReader(text, [&] { return parseNff(text, "fuzz.nff", &warnings); });
 }

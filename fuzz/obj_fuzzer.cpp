@@ -17,13 +17,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text = fuzz::asText(data, size);
   if (fuzz::mtllibLeavesSandbox(text)) return -1; // not kept in the corpus
   std::vector<Diagnostic> warnings;
-  Scene scene;
-  try {
-    scene = loadObj(fuzz::stageObj(text), &warnings);
-  } catch (const SceneError& e) {
-    if (e.diagnostics().empty()) fuzz::fail("SceneError without a diagnostic", text);
-    return 0;
-  }
-  fuzz::renderChecks(scene);
-  return 0;
+  return fuzz::checkReader(text, [&] { return loadObj(fuzz::stageObj(text), &warnings); });
 }

@@ -15,14 +15,6 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text = fuzz::asText(data, size);
   if (fuzz::includeLeavesSandbox(text)) return -1; // not kept in the corpus
-  Scene scene;
-  try {
-    scene = parseScene(text, (fuzz::sandbox() / "main.sc").string());
-  } catch (const SceneError& e) {
-    // Every rejection must say where and why.
-    if (e.diagnostics().empty()) fuzz::fail("SceneError without a diagnostic", text);
-    return 0;
-  }
-  fuzz::renderChecks(scene);
-  return 0;
+  return fuzz::checkReader(
+      text, [&] { return parseScene(text, (fuzz::sandbox() / "main.sc").string()); });
 }

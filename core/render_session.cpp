@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace prism {
 
@@ -115,47 +116,58 @@ void RenderSession::startWorkers(bool keepPass1) {
   });
 }
 
-void RenderSession::restart(bool keepPass1) {
-  stopWorkers();
-  ++restarts_;
-  startWorkers(keepPass1);
-}
-
-void RenderSession::setSettings(const RenderSettings& settings) {
-  const RenderSettings old = settings_;
+void RenderSession::apply(const SessionEdit& edit) {
+  if (edit.empty()) return;
+  for (const auto& [index, light] : edit.lights)
+    if (index >= scene_->lights.size())
+      throw std::out_of_range("light " + std::to_string(index + 1) +
+                              " does not exist: the scene has " +
+                              std::to_string(scene_->lights.size()));
+  // thresh and jitter only steer pass 2: a finished pass 1 stays valid when
+  // nothing else changes.
+  const RenderSettings& old = settings_;
+  const bool onlyPass2 =
+      !edit.camera && !edit.ambient && edit.lights.empty() &&
+      (!edit.settings ||
+       (old.width == edit.settings->width && old.height == edit.settings->height &&
+        old.maxDepth == edit.settings->maxDepth && old.tileSize == edit.settings->tileSize));
   bool pass1Complete;
   {
     std::lock_guard lock(mutex_);
     pass1Complete = work_->phase != SessionPhase::Coarse;
   }
-  // thresh and jitter only steer pass 2: a finished pass 1 stays valid.
-  const bool onlyPass2 = old.width == settings.width && old.height == settings.height &&
-                         old.maxDepth == settings.maxDepth && old.tileSize == settings.tileSize;
-  stopWorkers();
-  settings_ = settings;
+  stopWorkers(); // the workers read all of these: change them only while none runs
+  if (edit.settings) settings_ = *edit.settings;
+  if (edit.camera) scene_->camera = *edit.camera;
+  if (edit.ambient) scene_->ambient = *edit.ambient;
+  for (const auto& [index, light] : edit.lights)
+    scene_->lights[index] = light;
   ++restarts_;
   startWorkers(onlyPass2 && pass1Complete);
 }
 
+void RenderSession::setSettings(const RenderSettings& settings) {
+  SessionEdit edit;
+  edit.settings = settings;
+  apply(edit);
+}
+
 void RenderSession::setLight(std::size_t index, const Light& light) {
-  stopWorkers(); // the workers read the lights: change them only while none runs
-  scene_->lights.at(index) = light;
-  ++restarts_;
-  startWorkers(false);
+  SessionEdit edit;
+  edit.lights.emplace_back(index, light);
+  apply(edit);
 }
 
 void RenderSession::setAmbient(const Color& ambient) {
-  stopWorkers();
-  scene_->ambient = ambient;
-  ++restarts_;
-  startWorkers(false);
+  SessionEdit edit;
+  edit.ambient = ambient;
+  apply(edit);
 }
 
 void RenderSession::setCamera(const CameraSpec& camera) {
-  stopWorkers();
-  scene_->camera = camera;
-  ++restarts_;
-  startWorkers(false);
+  SessionEdit edit;
+  edit.camera = camera;
+  apply(edit);
 }
 
 void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel) {

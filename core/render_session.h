@@ -28,7 +28,9 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace prism {
@@ -69,6 +71,18 @@ struct SessionImage {
 // exactly one level, so the levels together are pass 1, each centre traced once.
 bool isNewAtLevel(int x, int y, int level);
 
+// Several values changed at once, with one restart: a dragged light, an undo
+// that puts back a camera and two lights, a reload re-applying the user's
+// edits. Unset members stay as they are.
+struct SessionEdit {
+  std::optional<RenderSettings> settings;
+  std::optional<CameraSpec> camera;
+  std::optional<Color> ambient;
+  std::vector<std::pair<std::size_t, Light>> lights; // 0-based index, new value
+
+  bool empty() const { return !settings && !camera && !ambient && lights.empty(); }
+};
+
 class RenderSession {
 public:
   // Starts rendering at once.
@@ -80,7 +94,11 @@ public:
 
   // Edits. Each one cancels the work in flight and restarts refinement, except
   // that a change of only `thresh` or `jitter` keeps a completed pass 1 and
-  // redoes pass 2. Light indices are 0-based here (users see them from 1).
+  // redoes pass 2. An empty edit does nothing. Light indices are 0-based here
+  // (users see them from 1); one past the scene's lights throws
+  // std::out_of_range before anything is stopped or changed.
+  void apply(const SessionEdit& edit);
+  // One value each: apply() with that member set.
   void setSettings(const RenderSettings& settings);
   void setLight(std::size_t index, const Light& light);
   void setAmbient(const Color& ambient);
@@ -116,7 +134,6 @@ public:
 private:
   struct Work; // one render generation: its film, counters and schedule
 
-  void restart(bool keepPass1);
   void stopWorkers();
   void startWorkers(bool keepPass1);
   void run(Work& work, bool keepPass1);

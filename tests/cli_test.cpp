@@ -257,6 +257,85 @@ TEST_F(Cli, BenchPrintsItsTablesAndScalingData) {
   EXPECT_EQ(prism("bench --accel fast").exitCode, 2);
 }
 
+// --eye, --lookat and --fov replace the scene's camera lines: the picture is
+// the one of the file with those lines written in, byte for byte, for
+// `render` and for `view`'s headless fallback.
+TEST_F(Cli, CameraOverridesRenderAsTheSceneWithThoseCameraLines) {
+  const std::string body = "light 2 3 4 30 30 30\nsurface 1 0.5 0.2 0.8 0.2 0 20 1\n"
+                           "sphere 0 0 0 1\nsurface 0.3 0.6 0.9 1 0 0 1 1\n"
+                           "polygon 4 -3 -1 -3  -3 -1 3  3 -1 3  3 -1 -3\n";
+  const std::string s = write("s.sc", "eye 0 0 4\nlookat 0 0 0\n" + body).string();
+  const std::string written =
+      write("w.sc", "eye 1.5 2 5\nlookat 0 -0.25 0\nfov 30\n" + body).string();
+  const std::string common = " --size 36 24 --depth 3 -q -o ";
+  const std::string camera = " --eye 1.5 2 5 --lookat 0 -0.25 0 --fov 30";
+  ASSERT_EQ(prism("render " + written + common + (dir_ / "want.png").string()).exitCode, 0);
+  const RunResult run = prism("render " + s + camera + common + (dir_ / "got.png").string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string want = slurp(dir_ / "want.png");
+  EXPECT_EQ(slurp(dir_ / "got.png"), want);
+  // The file's own camera gives another picture: the options were applied.
+  ASSERT_EQ(prism("render " + s + common + (dir_ / "file.png").string()).exitCode, 0);
+  EXPECT_NE(slurp(dir_ / "file.png"), want);
+
+  // prism view without a display renders headless, with the same camera.
+  const RunResult view =
+      runCaptured("env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(PRISM_BINARY) + " view " + s +
+                      camera + common + (dir_ / "view.png").string(),
+                  dir_);
+  ASSERT_EQ(view.exitCode, 0) << view.err;
+  EXPECT_EQ(slurp(dir_ / "view.png"), want);
+
+  // One option alone changes only its own line; the others stay the file's.
+  write("fov.sc", "eye 0 0 4\nlookat 0 0 0\nfov 20\n" + body);
+  ASSERT_EQ(prism("render " + (dir_ / "fov.sc").string() + common + (dir_ / "want20.png").string())
+                .exitCode,
+            0);
+  ASSERT_EQ(prism("render " + s + " --fov 20" + common + (dir_ / "got20.png").string()).exitCode,
+            0);
+  EXPECT_EQ(slurp(dir_ / "got20.png"), slurp(dir_ / "want20.png"));
+}
+
+// Each camera option is checked as the scene language checks the camera; a
+// bad one is a usage error (exit 2) with its reason, and nothing is written.
+TEST_F(Cli, InvalidCameraOverridesExitWith2AndSayWhy) {
+  // The scene: eye 0 0 4, lookat 0 0 0, up 0 1 0 (the default).
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "o.png";
+  const struct {
+    std::string options, message;
+  } cases[] = {
+      {"--fov 0", "--fov: DEGREES must be greater than 0 and less than 180, found 0"},
+      {"--fov 180", "--fov: DEGREES must be greater than 0 and less than 180, found 180"},
+      {"--fov -10", "--fov: DEGREES must be greater than 0 and less than 180, found -10"},
+      {"--eye 2e30 0 0", "--eye 2e+30 0 0: the point must be within +-1e30"},
+      {"--lookat 0 0 -1e31", "--lookat 0 0 -1e+31: the point must be within +-1e30"},
+      {"--eye 0 0 0", "--eye: eye and lookat are the same point (0 0 0), so there is no view "
+                      "direction"},
+      {"--lookat 0 0 4", "--lookat: eye and lookat are the same point (0 0 4)"},
+      {"--eye 1 2 3 --lookat 1 2 3", "--eye and --lookat: eye and lookat are the same point"},
+      {"--lookat 0 1e-320 4", "--lookat: eye and lookat are too close together or too far apart "
+                              "to give a view direction"},
+      {"--eye 0 5 0", "--eye: the scene's up (0 1 0) is parallel to the view direction from eye "
+                      "to lookat (eye 0 5 0, lookat 0 0 0)"},
+      {"--eye 1 7 1 --lookat 1 -2 1", "--eye and --lookat: the scene's up (0 1 0) is parallel"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.options);
+    const RunResult render = prism("render " + s + " " + c.options + " -q -o " + out.string());
+    EXPECT_EQ(render.exitCode, 2);
+    EXPECT_EQ(render.err.rfind("prism: error: " + c.message, 0), 0u) << render.err;
+    EXPECT_FALSE(fs::exists(out));
+    // `prism view` checks them the same way, before any window or fallback.
+    const RunResult view = prism("view " + s + " " + c.options + " -q -o " + out.string());
+    EXPECT_EQ(view.exitCode, 2);
+    EXPECT_NE(view.err.find("prism: error: " + c.message), std::string::npos) << view.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // CLI11 itself insists on three numbers.
+  EXPECT_EQ(prism("render " + s + " --eye 1 2 -q -o " + out.string()).exitCode, 2);
+}
+
 TEST_F(Cli, TreeGeneratorReproducesTheCommittedTree) {
   fs::create_directories(dir_ / "parts");
   const std::string command = std::string("'") + PRISM_TREE_GEN + "' '" + dir_.string() + "'";

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 
 namespace prism {
@@ -44,7 +45,8 @@ TEST(CoarseLevels, EveryPixelIsNewAtExactlyOneLevel) {
   for (int y = 0; y < 37; ++y) {
     for (int x = 0; x < 53; ++x) {
       int levels = 0;
-      for (int level : {8, 4, 2, 1}) levels += isNewAtLevel(x, y, level);
+      for (int level : {8, 4, 2, 1})
+        levels += isNewAtLevel(x, y, level);
       EXPECT_EQ(levels, 1) << x << "," << y;
     }
   }
@@ -131,7 +133,8 @@ TEST(RenderSession, MovingALightChangesExactlyWhereThatLightReaches) {
   // The right room, lit by light 2 only, did not change: its right third.
   for (int y = 0; y < s.height; ++y)
     for (int x = s.width * 3 / 4; x < s.width; ++x)
-      EXPECT_EQ(before.film.centre[before.film.index(x, y)], after.film.centre[after.film.index(x, y)]);
+      EXPECT_EQ(before.film.centre[before.film.index(x, y)],
+                after.film.centre[after.film.index(x, y)]);
 }
 
 TEST(RenderSession, ThresholdChangeKeepsPassOneAndRedoesOnlyPassTwo) {
@@ -145,7 +148,7 @@ TEST(RenderSession, ThresholdChangeKeepsPassOneAndRedoesOnlyPassTwo) {
   expectSameFilm(second, renderDirect(scene, s));
   EXPECT_GT(second.supersampledPixels, first.supersampledPixels);
   EXPECT_EQ(second.counts.eyePrimary, 80u * 60u); // pass 1 was kept, not retraced
-  s.maxDepth = 2;                                  // depth changes every sample
+  s.maxDepth = 2;                                 // depth changes every sample
   session.setSettings(s);
   expectSameFilm(session.waitForResult(), renderDirect(scene, s));
 }
@@ -163,6 +166,58 @@ TEST(RenderSession, CameraAndAmbientEditsRestartWithTheEditedScene) {
   EXPECT_EQ(session.progress().restarts, 2u);
 }
 
+TEST(RenderSession, OneApplyChangesSeveralValuesWithOneRestart) {
+  const Scene scene = parseScene(kTwoRooms, "rooms.sc");
+  RenderSettings s = smallSettings();
+  RenderSession session(scene, s);
+  Scene edited = scene;
+  edited.camera.eye += glm::dvec3(-1.0, 0.5, 0.0);
+  edited.ambient = Color(0.1, 0.05, 0.0);
+  edited.lights[1].position = glm::dvec3(4, 2, 1);
+  edited.lights[0].intensity = Color(5, 10, 20);
+  s.maxDepth = 3;
+  SessionEdit edit;
+  edit.settings = s;
+  edit.camera = edited.camera;
+  edit.ambient = edited.ambient;
+  edit.lights = {{1, edited.lights[1]}, {0, edited.lights[0]}};
+  session.apply(edit);
+  EXPECT_EQ(session.progress().restarts, 1u);
+  expectSameFilm(session.waitForResult(), renderDirect(edited, s));
+
+  // Nothing to change: no restart, the finished render stays.
+  session.apply(SessionEdit{});
+  EXPECT_EQ(session.progress().restarts, 1u);
+  EXPECT_TRUE(session.finished());
+
+  // A light the scene does not have: refused before anything stops or changes.
+  SessionEdit bad;
+  bad.ambient = Color(1.0);
+  bad.lights = {{2, edited.lights[0]}};
+  EXPECT_THROW(session.apply(bad), std::out_of_range);
+  EXPECT_EQ(session.progress().restarts, 1u);
+  EXPECT_TRUE(session.finished());
+  EXPECT_EQ(session.scene().ambient, edited.ambient);
+
+  // Threshold and jitter with nothing else keep pass 1; with a light they do not.
+  s.thresh = 0.05;
+  s.jitter = true;
+  SessionEdit pass2;
+  pass2.settings = s;
+  session.apply(pass2);
+  EXPECT_EQ(session.progress().pass1Pixels, 80 * 60); // kept at once, not being retraced
+  const RenderResult kept = session.waitForResult();
+  EXPECT_EQ(kept.counts.eyePrimary, 80u * 60u);
+  expectSameFilm(kept, renderDirect(edited, s));
+  s.thresh = 0.2;
+  edited.lights[0].intensity = Color(20, 10, 5);
+  SessionEdit both;
+  both.settings = s;
+  both.lights = {{0, edited.lights[0]}};
+  session.apply(both);
+  expectSameFilm(session.waitForResult(), renderDirect(edited, s));
+}
+
 TEST(RenderSession, CancellationIsPromptComparedWithTheRenderItStops) {
   // A render that takes a good fraction of a second, cancelled right after it
   // has started: the edit must return long before the render could have ended.
@@ -177,7 +232,8 @@ TEST(RenderSession, CancellationIsPromptComparedWithTheRenderItStops) {
   const double fullSeconds = std::chrono::duration<double>(Clock::now() - fullStart).count();
 
   RenderSession session(scene, s);
-  while (session.progress().pass1Pixels == 0) std::this_thread::yield();
+  while (session.progress().pass1Pixels == 0)
+    std::this_thread::yield();
   const auto cancelStart = Clock::now();
   session.setAmbient(Color(0.1)); // cancels, joins the workers, restarts
   const double cancelSeconds = std::chrono::duration<double>(Clock::now() - cancelStart).count();

@@ -1,12 +1,16 @@
 // The previewer's controller without a window: Save writes the picture a
 // headless render of the same settings gives, scene files are watched and
-// reloaded, a broken edit keeps the last good scene and lists its errors.
+// reloaded, a broken edit keeps the last good scene and lists its errors;
+// edits are undone and redone, survive reloads where their value still
+// exists, and Save scene as writes them.
 #include "viewer/file_watch.h"
 #include "viewer/view_controller.h"
 
 #include "core/exposure.h"
 #include "core/scene_loader.h"
 #include "core/scene_parser.h"
+
+#include "viewer/camera_controls.h"
 
 #include "test_pictures.h"
 
@@ -164,6 +168,416 @@ TEST(ViewController, ResetCameraGoesBackToTheFile) {
   EXPECT_EQ(c.scene().camera.eye, scene.camera.eye);
   c.update();
   EXPECT_TRUE(c.snapshotCurrent());
+}
+
+// ---------------------------------------------------------------------------
+// Undo and redo
+
+bool sameCamera(const CameraSpec& a, const CameraSpec& b) {
+  return a.eye == b.eye && a.lookat == b.lookat && a.up == b.up && a.fov == b.fov;
+}
+
+bool sameLight(const Light& a, const Light& b) {
+  return a.position == b.position && a.intensity == b.intensity;
+}
+
+// Lets the render finish; returns the picture the window shows then.
+std::vector<Rgb> finishedImage(ViewController& c) {
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+  return c.image().radiance;
+}
+
+// A headless render of `scene` with the controller's settings.
+std::vector<Rgb> renderOf(const Scene& scene, const ViewOptions& options) {
+  const auto accel = makeAccel(scene, options.accel);
+  return render(scene, *accel, options.settings).film.radiance;
+}
+
+// After an edit (or undo, redo): the session restarted once more, and the
+// snapshot is stale until the next update().
+void expectRestarted(ViewController& c, std::uint64_t& restarts) {
+  EXPECT_FALSE(c.snapshotCurrent());
+  c.update();
+  EXPECT_EQ(c.progress().restarts, restarts + 1);
+  restarts = c.progress().restarts;
+}
+
+TEST(ViewControllerUndo, UndoAndRedoRestoreExactValuesAndRestartTheRender) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  EXPECT_FALSE(c.canUndo());
+  EXPECT_FALSE(c.canRedo());
+  EXPECT_FALSE(c.undo());
+  c.update();
+  std::uint64_t restarts = c.progress().restarts;
+
+  Light moved = scene.lights[0];
+  moved.position = Vec3(-2.5, 3.25, 1.125);
+  moved.intensity = Color(10, 20, 30);
+  c.setLight(0, moved);
+  expectRestarted(c, restarts);
+  const CameraSpec orbited = orbit(scene.camera, 30.0, 10.0);
+  c.setCamera(orbited);
+  expectRestarted(c, restarts);
+  RenderSettings deeper = c.settings();
+  deeper.maxDepth = 1;
+  c.setSettings(deeper);
+  expectRestarted(c, restarts);
+
+  ASSERT_TRUE(c.undo()); // the depth
+  expectRestarted(c, restarts);
+  EXPECT_EQ(c.settings().maxDepth, 3);
+  ASSERT_TRUE(c.undo()); // the camera
+  expectRestarted(c, restarts);
+  EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
+  EXPECT_TRUE(sameLight(c.scene().lights[0], moved));
+  EXPECT_TRUE(c.canRedo());
+  // The render restarted with the light moved and the file's camera.
+  Scene expected = scene;
+  expected.lights[0] = moved;
+  EXPECT_EQ(finishedImage(c), renderOf(expected, options));
+
+  ASSERT_TRUE(c.undo()); // the light
+  expectRestarted(c, restarts);
+  EXPECT_TRUE(sameLight(c.scene().lights[0], scene.lights[0]));
+  EXPECT_FALSE(c.canUndo());
+  EXPECT_FALSE(c.undo());
+  EXPECT_FALSE(c.edits().sceneEdited());
+  EXPECT_EQ(finishedImage(c), renderOf(scene, options));
+
+  ASSERT_TRUE(c.redo());
+  expectRestarted(c, restarts);
+  EXPECT_TRUE(sameLight(c.scene().lights[0], moved));
+  ASSERT_TRUE(c.redo());
+  EXPECT_TRUE(sameCamera(c.scene().camera, orbited));
+  ASSERT_TRUE(c.redo());
+  EXPECT_EQ(c.settings().maxDepth, 1);
+  EXPECT_FALSE(c.canRedo());
+  EXPECT_FALSE(c.redo());
+}
+
+TEST(ViewControllerUndo, ANewEditDropsWhatCouldBeRedone) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+  c.setAmbient(Color(0.1));
+  c.setAmbient(Color(0.2));
+  ASSERT_TRUE(c.undo());
+  EXPECT_EQ(c.scene().ambient, Color(0.1));
+  EXPECT_TRUE(c.canRedo());
+  c.setAmbient(Color(0.3));
+  EXPECT_FALSE(c.canRedo());
+  EXPECT_FALSE(c.redo());
+  ASSERT_TRUE(c.undo());
+  EXPECT_EQ(c.scene().ambient, Color(0.1));
+  // An edit that changes nothing is no step and no restart.
+  c.update();
+  const std::uint64_t restarts = c.progress().restarts;
+  c.setAmbient(Color(0.1));
+  EXPECT_TRUE(c.snapshotCurrent());
+  EXPECT_TRUE(c.canRedo()); // still there
+  c.update();
+  EXPECT_EQ(c.progress().restarts, restarts);
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+TEST(ViewControllerUndo, ADragIsOneStep) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+  c.setAmbient(Color(0.05)); // a step before the drags
+
+  // A mouse drag: one camera edit per frame.
+  c.beginGesture();
+  EXPECT_TRUE(c.inGesture());
+  CameraSpec camera = scene.camera;
+  for (int frame = 0; frame < 40; ++frame) {
+    camera = orbit(camera, 2.0, 0.5);
+    c.setCamera(camera);
+    c.update();
+  }
+  c.endGesture();
+  EXPECT_TRUE(sameCamera(c.scene().camera, camera));
+  // A slider drag of light 1 (position, then intensity), the same way.
+  c.beginGesture();
+  Light light = scene.lights[0];
+  for (int frame = 0; frame < 25; ++frame) {
+    light.position.x += 0.1;
+    light.intensity *= 1.01;
+    c.setLight(0, light);
+  }
+  c.endGesture();
+
+  ASSERT_TRUE(c.undo()); // the whole light drag
+  EXPECT_TRUE(sameLight(c.scene().lights[0], scene.lights[0]));
+  EXPECT_TRUE(sameCamera(c.scene().camera, camera));
+  ASSERT_TRUE(c.undo()); // the whole camera drag
+  EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
+  EXPECT_EQ(c.scene().ambient, Color(0.05));
+  ASSERT_TRUE(c.undo()); // the ambient
+  EXPECT_FALSE(c.canUndo());
+  ASSERT_TRUE(c.redo());
+  ASSERT_TRUE(c.redo());
+  EXPECT_TRUE(sameCamera(c.scene().camera, camera)); // the drag's end, in one step
+
+  // A drag that ends where it began leaves no step.
+  ASSERT_TRUE(c.redo());
+  c.beginGesture();
+  Light away = light;
+  away.position.y += 5.0;
+  c.setLight(0, away);
+  c.setLight(0, light);
+  c.endGesture();
+  EXPECT_FALSE(c.canRedo());
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameLight(c.scene().lights[0], scene.lights[0])); // the light drag's step
+
+  // Undo in the middle of a drag: the rest of the drag is a new step.
+  c.beginGesture();
+  c.setAmbient(Color(0.5));
+  ASSERT_TRUE(c.undo());
+  EXPECT_EQ(c.scene().ambient, Color(0.05));
+  c.setAmbient(Color(0.6));
+  c.setAmbient(Color(0.7));
+  c.endGesture();
+  ASSERT_TRUE(c.undo());
+  EXPECT_EQ(c.scene().ambient, Color(0.05));
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+TEST(ViewControllerUndo, TheHistoryIsBounded) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  ViewOptions options = optionsFor(scene, dir / "main.sc");
+  options.settings.threads = 1;
+  ViewController c(scene, options);
+  const int edits = int(ViewController::kMaxUndoSteps) + 5;
+  for (int i = 1; i <= edits; ++i)
+    c.setAmbient(Color(0.001 * i));
+  std::size_t undone = 0;
+  while (c.undo())
+    ++undone;
+  EXPECT_EQ(undone, ViewController::kMaxUndoSteps);
+  EXPECT_EQ(c.scene().ambient, Color(0.001 * 5)); // the oldest steps went first
+}
+
+TEST(ViewControllerUndo, ResetsAreUndoableEdits) {
+  ScratchDir dir;
+  writeFile(dir / "main.sc", kMain);
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\nlight -2 3 4 10 10 10\n");
+  const Scene scene = loadScene(dir / "main.sc");
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+  Light a = scene.lights[0], b = scene.lights[1];
+  a.position = Vec3(0, 4, 0);
+  b.intensity = Color(1, 2, 3);
+  c.setLight(0, a);
+  c.setLight(1, b);
+  const CameraSpec zoomed = zoom(scene.camera, 0.5);
+  c.setCamera(zoomed);
+  c.setAmbient(Color(0.2));
+  EXPECT_EQ(c.edits().names(),
+            (std::vector<std::string>{"camera", "ambient", "light 1", "light 2"}));
+
+  c.resetLight(1);
+  EXPECT_TRUE(sameLight(c.scene().lights[1], scene.lights[1]));
+  EXPECT_TRUE(sameLight(c.scene().lights[0], a)); // the other light stays edited
+  c.resetCamera();
+  EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameCamera(c.scene().camera, zoomed));
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameLight(c.scene().lights[1], b));
+
+  RenderSettings s = c.settings();
+  s.thresh = 0.25;
+  c.setSettings(s);
+  c.revertToFile();
+  EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
+  EXPECT_EQ(c.scene().ambient, scene.ambient);
+  EXPECT_TRUE(sameLight(c.scene().lights[0], scene.lights[0]));
+  EXPECT_TRUE(sameLight(c.scene().lights[1], scene.lights[1]));
+  EXPECT_EQ(c.settings().thresh, 0.25); // not a scene value
+  EXPECT_FALSE(c.edits().sceneEdited());
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameCamera(c.scene().camera, zoomed));
+  EXPECT_TRUE(sameLight(c.scene().lights[0], a));
+  EXPECT_TRUE(sameLight(c.scene().lights[1], b));
+  EXPECT_EQ(c.scene().ambient, Color(0.2));
+
+  // An edit of a light the scene does not have is refused, and changes nothing.
+  EXPECT_THROW(c.setLight(2, a), std::out_of_range);
+  EXPECT_TRUE(sameLight(c.scene().lights[1], b));
+  ASSERT_TRUE(c.redo());
+  EXPECT_FALSE(c.canRedo());
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// ---------------------------------------------------------------------------
+// Reloads keep the user's edits
+
+// Reloads after the test changed a file, until the scene has `lights` lights
+// and no reload runs. (The file watch may reload once more: the same files,
+// the same result.)
+void reloadUntil(ViewController& c, std::size_t lights) {
+  c.reload();
+  updateUntil(c, [&] { return !c.reloading() && c.scene().lights.size() == lights; });
+}
+
+TEST(ViewControllerReload, KeepsEditsWhoseValuesStillExistAndDropsTheOthers) {
+  ScratchDir dir;
+  writeFile(dir / "main.sc", kMain);
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\nlight -2 3 4 10 10 10\n");
+  const Scene scene = loadScene(dir / "main.sc");
+  ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+
+  Light second = scene.lights[1];
+  second.position = Vec3(-1, 6, 2);
+  const CameraSpec orbited = orbit(scene.camera, -20.0, 15.0);
+  c.setLight(1, second);
+  c.setCamera(orbited);
+  c.setAmbient(Color(0.1, 0.2, 0.3));
+  RenderSettings s = c.settings();
+  s.maxDepth = 2;
+  s.thresh = 0.3;
+  s.jitter = true;
+  c.setSettings(s);
+
+  // The file now has one light, at a new place: light 2's edit has nothing to
+  // go on; the camera, the ambient and the settings stay.
+  writeFile(dir / "lights.sc", "light 1 5 1 20 20 20\n");
+  reloadUntil(c, 1);
+  EXPECT_EQ(c.keptEdits().kept, (std::vector<std::string>{"camera", "ambient"}));
+  EXPECT_EQ(c.keptEdits().dropped, (std::vector<std::string>{"light 2"}));
+  ASSERT_EQ(c.scene().lights.size(), 1u);
+  EXPECT_EQ(c.scene().lights[0].position, Vec3(1, 5, 1)); // the file's, not edited
+  EXPECT_TRUE(sameCamera(c.scene().camera, orbited));
+  EXPECT_EQ(c.scene().ambient, Color(0.1, 0.2, 0.3));
+  EXPECT_EQ(c.settings().maxDepth, 2);
+  EXPECT_EQ(c.settings().thresh, 0.3);
+  EXPECT_TRUE(c.settings().jitter);
+  // The file's values are there for the resets.
+  ASSERT_EQ(c.fileValues().lights.size(), 1u);
+  EXPECT_EQ(c.fileValues().lights[0].position, Vec3(1, 5, 1));
+  EXPECT_TRUE(sameCamera(c.fileValues().camera, scene.camera));
+  // The picture is the new file's scene with the kept edits over it.
+  Scene expected = loadScene(dir / "main.sc");
+  expected.camera = orbited;
+  expected.ambient = Color(0.1, 0.2, 0.3);
+  options.settings = c.settings();
+  EXPECT_EQ(finishedImage(c), renderOf(expected, options));
+
+  // The history lost the step of the vanished light's edit: three undos, not
+  // four, lead back to the file.
+  int undone = 0;
+  while (c.undo())
+    ++undone;
+  EXPECT_EQ(undone, 3);
+  EXPECT_FALSE(c.edits().sceneEdited());
+  EXPECT_TRUE(c.keptEdits().dropped.empty()); // the notice goes with the user's next step
+  EXPECT_EQ(c.settings().maxDepth, 3);
+  while (c.redo()) {
+  }
+
+  // An edited light that the file moves keeps the user's value, and a reset
+  // goes to the file's new one.
+  Light first = c.scene().lights[0];
+  first.intensity = Color(50, 5, 5);
+  c.setLight(0, first);
+  writeFile(dir / "lights.sc", "light 3 3 3 20 20 20\nlight 0 9 0 1 1 1\n");
+  reloadUntil(c, 2);
+  EXPECT_EQ(c.keptEdits().kept, (std::vector<std::string>{"camera", "ambient", "light 1"}));
+  EXPECT_TRUE(c.keptEdits().dropped.empty()); // the user edited since the last drop
+  ASSERT_EQ(c.scene().lights.size(), 2u);
+  EXPECT_TRUE(sameLight(c.scene().lights[0], first));
+  EXPECT_EQ(c.scene().lights[1].position, Vec3(0, 9, 0));
+  c.resetLight(0);
+  EXPECT_EQ(c.scene().lights[0].position, Vec3(3, 3, 3));
+
+  // Revert to the file: the re-read file's values; undoable.
+  c.revertToFile();
+  EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
+  EXPECT_EQ(c.scene().ambient, scene.ambient);
+  EXPECT_EQ(c.settings().maxDepth, 2); // the settings stay
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameCamera(c.scene().camera, orbited));
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+TEST(ViewControllerReload, ACommandLineCameraIsAnEditOverTheFile) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  ViewOptions options = optionsFor(scene, dir / "main.sc");
+  CameraSpec given = scene.camera;
+  given.eye = Vec3(3, 2, 4);
+  given.fov = 30.0;
+  options.camera = given;
+  ViewController c(scene, options);
+  EXPECT_TRUE(sameCamera(c.scene().camera, given));
+  EXPECT_FALSE(c.canUndo()); // where the session starts
+  EXPECT_EQ(c.edits().names(), std::vector<std::string>{"camera"});
+  writeFile(dir / "lights.sc", "light 2 3 5 30 30 30\nlight 0 5 0 1 1 1\n");
+  reloadUntil(c, 2);
+  EXPECT_EQ(c.keptEdits().kept, std::vector<std::string>{"camera"});
+  EXPECT_TRUE(sameCamera(c.scene().camera, given));
+  c.resetCamera();
+  EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameCamera(c.scene().camera, given));
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// ---------------------------------------------------------------------------
+// Save scene as
+
+TEST(ViewControllerSaveScene, WritesTheEditedSceneThatRendersTheSamePicture) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir); // light 1 comes from an included file
+  ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  const CameraSpec camera = pan(orbit(scene.camera, 25.0, -10.0), 3.0, -2.0, 30);
+  Light light = scene.lights[0];
+  light.position = Vec3(-1.0 / 3.0, 2.5, 1e-3);
+  light.intensity = Color(12.5, 7.0, 3.0);
+  c.setCamera(camera);
+  c.setLight(0, light);
+  c.setAmbient(Color(0.05, 0.04, 0.03));
+
+  const fs::path saved = dir / "sub" / "view.sc";
+  fs::create_directory(dir / "sub");
+  c.saveSceneAs(saved.string());
+  EXPECT_EQ(c.sceneSaveState(), ViewController::SceneSaveState::Writing);
+  updateUntil(c, [&] { return !c.sceneSaveBusy(); });
+  ASSERT_EQ(c.sceneSaveState(), ViewController::SceneSaveState::Saved) << c.sceneSaveMessage();
+  EXPECT_EQ(c.sceneSaveMessage(), "saved scene " + saved.string());
+
+  const Scene back = loadScene(saved); // no include left to find from sub/
+  EXPECT_TRUE(sameCamera(back.camera, camera));
+  ASSERT_EQ(back.lights.size(), 1u);
+  EXPECT_TRUE(sameLight(back.lights[0], light));
+  EXPECT_EQ(back.ambient, Color(0.05, 0.04, 0.03));
+  EXPECT_EQ(back.files.size(), 1u);
+  const std::string text = slurp(saved);
+  EXPECT_NE(text.find("# Saved by prism view from " + (dir / "main.sc").string() +
+                      ", with edits of: camera, ambient, light 1."),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("\ninclude"), std::string::npos) << text; // flattened
+  // The same picture as the window's.
+  EXPECT_EQ(renderOf(back, options), finishedImage(c));
+
+  // Failures are a state and a message, never an exception.
+  c.saveSceneAs((dir / "view.png").string());
+  EXPECT_EQ(c.sceneSaveState(), ViewController::SceneSaveState::Failed);
+  EXPECT_NE(c.sceneSaveMessage().find("scene files end in .sc"), std::string::npos)
+      << c.sceneSaveMessage();
+  c.saveSceneAs((dir / "no such dir" / "x.sc").string());
+  EXPECT_EQ(c.sceneSaveState(), ViewController::SceneSaveState::Failed);
+  EXPECT_NE(c.sceneSaveMessage().find("no such directory"), std::string::npos)
+      << c.sceneSaveMessage();
+  EXPECT_FALSE(fs::exists(dir / "view.png"));
 }
 
 } // namespace

@@ -6,7 +6,9 @@
 #include "core/exposure.h"
 #include "core/image_formation.h"
 #include "core/image_io.h"
+#include "core/math.h"
 #include "core/memory_budget.h"
+#include "core/model_range.h"
 #include "core/parallel.h"
 #include "core/pending_file.h"
 #include "core/scene_loader.h"
@@ -16,6 +18,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -30,6 +33,17 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+// The shortest text that reads back as exactly `x`.
+std::string number(double x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+Vec3 point(const std::vector<double>& xyz) { return Vec3(xyz[0], xyz[1], xyz[2]); }
+
+std::string text(const Vec3& v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
 
 int printPixelTree(const Scene& scene, const Accel& accel, const RenderSettings& settings, int x,
                    int y) {
@@ -68,6 +82,64 @@ void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& o) {
                   "Ray acceleration: bvh (SAH hierarchy, default), groups (the push/pop "
                   "hierarchy) or none (test every primitive)")
       ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case));
+  // Checked once the scene is loaded (applyCameraOptions), with the scene
+  // language's rules and messages.
+  command.add_option("--eye", o.eye, "Camera position X Y Z (overrides the scene's eye)")
+      ->expected(3);
+  command.add_option("--lookat", o.lookat, "Point X Y Z the camera looks at (overrides lookat)")
+      ->expected(3);
+  command.add_option("--fov", o.fov,
+                     "Full vertical field of view in degrees, 0 < fov < 180 (overrides fov)");
+}
+
+bool hasCameraOptions(const RenderCommandOptions& o) {
+  return !o.eye.empty() || !o.lookat.empty() || o.fov.has_value();
+}
+
+std::optional<std::string> cameraOptionsProblem(const RenderCommandOptions& o) {
+  if (o.fov && !(*o.fov > 0.0 && *o.fov < 180.0))
+    return "--fov: DEGREES must be greater than 0 and less than 180, found " + number(*o.fov);
+  for (const auto& [name, xyz] : {std::pair{"--eye", &o.eye}, std::pair{"--lookat", &o.lookat}})
+    if (!xyz->empty() && !withinModelRange(point(*xyz)))
+      return std::string(name) + " " + text(point(*xyz)) + ": the point must be within +-" +
+             kMaxCoordinateText;
+  return std::nullopt;
+}
+
+std::optional<std::string> applyCameraOptions(const RenderCommandOptions& o, CameraSpec& camera) {
+  if (std::optional<std::string> problem = cameraOptionsProblem(o)) return problem;
+  CameraSpec c = camera;
+  if (!o.eye.empty()) c.eye = point(o.eye);
+  if (!o.lookat.empty()) c.lookat = point(o.lookat);
+  if (o.fov) c.fov = *o.fov;
+  if (!o.eye.empty() || !o.lookat.empty()) {
+    // The parser's camera checks (core/scene_parser.cpp), which are the
+    // computation of Camera's constructor, so that it cannot produce NaN.
+    const std::string given = !o.eye.empty() && !o.lookat.empty() ? "--eye and --lookat"
+                              : !o.eye.empty()                    ? "--eye"
+                                                                  : "--lookat";
+    const std::string view = "eye " + text(c.eye) + ", lookat " + text(c.lookat);
+    const Vec3 direction = c.lookat - c.eye;
+    if (direction == Vec3(0.0))
+      return given + ": eye and lookat are the same point (" + text(c.eye) +
+             "), so there is no view direction";
+    const Vec3 forward = glm::normalize(direction);
+    if (!isFinite(forward))
+      return given +
+             ": eye and lookat are too close together or too far apart to give a view "
+             "direction (" +
+             view + ")";
+    if (c.up == Vec3(0.0)) return given + ": the scene's up is the zero vector";
+    const Vec3 unitUp = glm::normalize(c.up / maxAbsComponent(c.up));
+    if (glm::length(glm::cross(forward, unitUp)) < 1e-9)
+      return given + ": the scene's up (" + text(c.up) +
+             ") is parallel to the view direction from eye to lookat (" + view + ")";
+    if (!isFinite(glm::normalize(glm::cross(forward, c.up))))
+      return given + ": the scene's up (" + text(c.up) +
+             ") is too short to give a direction with this view (" + view + ")";
+  }
+  camera = c;
+  return std::nullopt;
 }
 
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
@@ -94,6 +166,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
 }
 
 int runRenderCommand(const RenderCommandOptions& o) {
+  if (const std::optional<std::string> problem = cameraOptionsProblem(o)) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitUsage;
+  }
   // Every output is checked before any work: a typo in a folder name must not
   // cost a render, or leave a picture without its statistics.
   const bool writable = succeeds([&] {
@@ -103,8 +179,12 @@ int runRenderCommand(const RenderCommandOptions& o) {
   if (!writable) return kExitFailure;
 
   const auto loadStart = Clock::now();
-  const std::optional<Scene> loaded = loadSceneReporting(o.scene);
+  std::optional<Scene> loaded = loadSceneReporting(o.scene);
   if (!loaded) return kExitUsage;
+  if (const std::optional<std::string> problem = applyCameraOptions(o, loaded->camera)) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitUsage;
+  }
   const Scene& scene = *loaded;
   const double loadSeconds = secondsSince(loadStart);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/accel.h"
+#include "core/camera.h"
 #include "core/renderer.h"
 
 #include <optional>
@@ -16,11 +17,14 @@ namespace prism {
 
 struct RenderCommandOptions {
   std::string scene;
-  std::string output;       // image path; the format follows its extension
-  std::optional<int> depth; // max ray depth (default 5)
-  double thresh = 0.1;      // antialiasing threshold
-  std::vector<int> size;    // W H, overriding the scene's `resolution`
-  int threads = 0;          // 0: all cores
+  std::string output;         // image path; the format follows its extension
+  std::optional<int> depth;   // max ray depth (default 5)
+  double thresh = 0.1;        // antialiasing threshold
+  std::vector<int> size;      // W H, overriding the scene's `resolution`
+  std::vector<double> eye;    // X Y Z, overriding the scene's camera (empty: the scene's)
+  std::vector<double> lookat; // X Y Z
+  std::optional<double> fov;  // degrees
+  int threads = 0;            // 0: all cores
   bool jitter = false;
   bool floatTiff = false; // write float radiance instead of 8-bit pixels
   AccelKind accel = AccelKind::Bvh;
@@ -35,8 +39,23 @@ inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
 
 // Adds the options every rendering command shares (--depth, --thresh, --size,
-// --threads, --jitter, --accel) to `command`, filling `options`.
+// --threads, --jitter, --accel, --eye, --lookat, --fov) to `command`, filling
+// `options`.
 void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& options);
+
+// The camera options, each on its own, checked with the scene language's rules
+// before anything is loaded: --fov strictly between 0 and 180 degrees, points
+// within +-kMaxCoordinate. Returns the message (without "prism: error: ").
+std::optional<std::string> cameraOptionsProblem(const RenderCommandOptions& options);
+
+// The one place the camera options are applied, for `render`, `view` and its
+// headless fallback: puts them over `camera` (the loaded scene's) and checks
+// the view they make as the scene language does (eye != lookat, the scene's
+// `up` not parallel to the new view direction), after cameraOptionsProblem.
+// On a problem `camera` is left as it was and the message is returned.
+std::optional<std::string> applyCameraOptions(const RenderCommandOptions& options,
+                                              CameraSpec& camera);
+bool hasCameraOptions(const RenderCommandOptions& options);
 
 // Adds the `render` subcommand to `app`, filling `options`.
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options);

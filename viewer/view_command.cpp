@@ -57,6 +57,10 @@ std::vector<const char*> withDefaultCommand(const CLI::App& app, int argc, char*
 }
 
 int runViewCommand(const ViewCommandOptions& o) {
+  if (const std::optional<std::string> problem = cameraOptionsProblem(o.render)) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitUsage;
+  }
 #ifndef PRISM_HAVE_PREVIEWER
   return renderHeadless(o, "this prism was built without the previewer");
 #else
@@ -76,6 +80,13 @@ int runViewCommand(const ViewCommandOptions& o) {
     for (const Diagnostic& d : loadWarnings)
       app.warnings.push_back(formatWarning(d)); // printed by the window, or by the fallback
     ViewOptions& v = app.view;
+    CameraSpec camera = scene.camera;
+    if (const std::optional<std::string> problem = applyCameraOptions(o.render, camera)) {
+      std::cerr << "prism: error: " << *problem << "\n";
+      closeWindowSystem();
+      return kExitUsage;
+    }
+    if (hasCameraOptions(o.render)) v.camera = camera; // an edit over the file's camera
     v.scenePath = o.render.scene;
     v.sizeFromScene = o.render.size.empty();
     v.settings.width = v.sizeFromScene ? scene.width : o.render.size[0];

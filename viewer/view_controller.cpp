@@ -1,9 +1,15 @@
 #include "view_controller.h"
 
 #include "core/exposure.h"
+#include "core/image_io.h"
 #include "core/scene_loader.h"
+#include "core/scene_writer.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
+#include <memory>
+#include <stdexcept>
 
 namespace prism {
 
@@ -16,38 +22,85 @@ constexpr auto kPollInterval = std::chrono::milliseconds(500);
 
 ViewController::ViewController(Scene scene, const ViewOptions& options,
                                std::vector<std::string> warnings)
-    : options_(options), fileCamera_(scene.camera), sceneWarnings_(std::move(warnings)) {
+    : options_(options), file_(FileValues::of(scene)), sceneWarnings_(std::move(warnings)) {
   for (const std::string& line : sceneWarnings_)
     std::cerr << line << "\n"; // also for whoever runs it from a terminal
   watch_.watch(scene.files);
+  UserEdits start;
+  start.settings = options.settings;
+  start.camera = options.camera;
+  states_.push_back(start);
+  current().applyTo(scene);
   session_ = std::make_unique<RenderSession>(std::move(scene), options.settings, options.accel);
 }
 
 ViewController::~ViewController() {
   if (loading_.valid()) loading_.wait(); // the loader thread must not outlive what it reads
+  if (sceneSave_.writing.valid()) sceneSave_.writing.wait();
 }
 
-void ViewController::setSettings(const RenderSettings& settings) {
-  session_->setSettings(settings);
+void ViewController::apply(const SceneEdit& edit) {
+  record(withEdit(current(), edit, session_->scene().lights.size()));
+}
+
+void ViewController::record(UserEdits next) {
+  if (next == current()) return; // nothing changed: no step, no restart
+  keptEdits_ = {};               // the user has seen what the reload did
+  if (gesture_ && gestureStep_) {
+    current() = std::move(next);
+  } else {
+    states_.erase(states_.begin() + std::ptrdiff_t(at_) + 1, states_.end()); // no more redo
+    states_.push_back(std::move(next));
+    ++at_;
+    if (states_.size() > kMaxUndoSteps + 1) {
+      states_.pop_front();
+      --at_;
+    }
+    gestureStep_ = gesture_;
+  }
+  show();
+}
+
+void ViewController::show() {
+  const SessionEdit change =
+      changeToShow(current(), file_, session_->scene(), session_->settings());
+  if (change.empty()) return;
+  session_->apply(change);
   stale_ = true;
 }
 
-void ViewController::setLight(std::size_t index, const Light& light) {
-  session_->setLight(index, light);
-  stale_ = true;
+bool ViewController::undo() {
+  if (!canUndo()) return false;
+  --at_;
+  keptEdits_ = {};
+  gestureStep_ = false; // a gesture still going on makes a new step
+  show();
+  return true;
 }
 
-void ViewController::setAmbient(const Color& ambient) {
-  session_->setAmbient(ambient);
-  stale_ = true;
+bool ViewController::redo() {
+  if (!canRedo()) return false;
+  ++at_;
+  keptEdits_ = {};
+  gestureStep_ = false;
+  show();
+  return true;
 }
 
-void ViewController::setCamera(const CameraSpec& camera) {
-  session_->setCamera(camera);
-  stale_ = true;
+void ViewController::beginGesture() {
+  gesture_ = true;
+  gestureStep_ = false;
 }
 
-void ViewController::resetCamera() { setCamera(fileCamera_); }
+void ViewController::endGesture() {
+  // A drag that came back to where it started leaves no step to undo.
+  if (gestureStep_ && states_[at_] == states_[at_ - 1]) {
+    states_.erase(states_.begin() + std::ptrdiff_t(at_));
+    --at_;
+  }
+  gesture_ = false;
+  gestureStep_ = false;
+}
 
 ViewController::LoadedScene ViewController::load(const std::string& path, AccelKind accel) {
   LoadedScene loaded;
@@ -77,7 +130,31 @@ void ViewController::reload() {
                         session_->accelKind());
 }
 
-void ViewController::apply(LoadedScene loaded) {
+// The user's edits follow the scene into every state of the history: those of
+// lights the file no longer has are dropped, and the size follows the file's
+// `resolution` unless --size set it. Steps that no longer change anything go,
+// so that every undo does something.
+void ViewController::fitHistoryTo(const Scene& scene) {
+  for (UserEdits& state : states_) {
+    std::erase_if(state.lights,
+                  [&](const auto& edit) { return edit.first >= scene.lights.size(); });
+    if (options_.sizeFromScene) {
+      state.settings.width = scene.width;
+      state.settings.height = scene.height;
+    }
+  }
+  for (std::size_t k = 1; k < states_.size();) {
+    if (!(states_[k] == states_[k - 1])) {
+      ++k;
+      continue;
+    }
+    states_.erase(states_.begin() + std::ptrdiff_t(k));
+    if (at_ >= k) --at_;
+  }
+  gestureStep_ = false; // a gesture still going on makes a new step
+}
+
+void ViewController::install(LoadedScene loaded) {
   // Also for whoever runs the previewer from a terminal.
   for (const std::string& line : loaded.errors.empty() ? loaded.warnings : loaded.errors)
     std::cerr << line << "\n";
@@ -88,19 +165,76 @@ void ViewController::apply(LoadedScene loaded) {
   }
   sceneErrors_.clear();
   sceneWarnings_ = std::move(loaded.warnings);
-  watch_.watch(loaded.scene->files); // an edit may have added or dropped an include
-  fileCamera_ = loaded.scene->camera;
-  if (options_.sizeFromScene) {
-    RenderSettings s = session_->settings();
-    if (s.width != loaded.scene->width || s.height != loaded.scene->height) {
-      s.width = loaded.scene->width;
-      s.height = loaded.scene->height;
-      session_->setSettings(s);
-    }
-  }
+  Scene& scene = *loaded.scene;
+  watch_.watch(scene.files); // an edit may have added or dropped an include
+  file_ = FileValues::of(scene);
+
+  // The user's edits go over the re-read file where their value still exists.
+  // (Dropped edits stay listed until the user's next edit: the file watch
+  // often reloads twice for one save, and the second drops nothing.)
+  for (const auto& [index, light] : current().lights)
+    if (index >= scene.lights.size())
+      keptEdits_.dropped.push_back("light " + std::to_string(index + 1));
+  fitHistoryTo(scene);
+  keptEdits_.kept = current().names();
+  current().applyTo(scene); // the hierarchy does not depend on the camera or the lights
+
+  const RenderSettings& s = current().settings;
+  if (s.width != session_->settings().width || s.height != session_->settings().height)
+    session_->setSettings(s);
   session_->setScene(std::move(loaded.scene), std::move(loaded.accel));
   stale_ = true;
   ++successfulReloads_;
+}
+
+void ViewController::saveSceneAs(const std::string& path) {
+  if (sceneSave_.writing.valid()) { // one file at a time
+    sceneSave_.writing.wait();
+    pollSceneSave();
+  }
+  sceneSave_.path = path;
+  try {
+    if (std::filesystem::path(path).extension() != ".sc")
+      throw std::runtime_error("cannot save the scene as '" + path + "': scene files end in .sc");
+    checkWritableFile(path);
+  } catch (const std::exception& error) {
+    sceneSave_.state = SceneSaveState::Failed;
+    sceneSave_.message = error.what();
+    return;
+  }
+  // A copy: the session's scene may be replaced by a reload while this writes.
+  auto scene = std::make_shared<const Scene>(session_->sceneCopy());
+  const std::vector<std::string> edited = current().names();
+  std::string header = "Saved by prism view from " + options_.scenePath + ", ";
+  if (edited.empty()) {
+    header += "without edits.";
+  } else {
+    header += "with edits of:";
+    for (const std::string& name : edited)
+      header += (name == edited.front() ? " " : ", ") + name;
+    header += ".";
+  }
+  header += "\nIncluded files are written out in full: the .sc language cannot override a\n"
+            "camera or light set by an included file.";
+  sceneSave_.state = SceneSaveState::Writing;
+  sceneSave_.message = "writing " + path;
+  sceneSave_.writing = std::async(std::launch::async, [scene, path, header]() -> std::string {
+    try {
+      saveScene(path, *scene, header);
+      return {};
+    } catch (const std::exception& error) { // std::bad_alloc too
+      return error.what();
+    }
+  });
+}
+
+void ViewController::pollSceneSave() {
+  if (!sceneSave_.writing.valid() ||
+      sceneSave_.writing.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  const std::string error = sceneSave_.writing.get();
+  sceneSave_.state = error.empty() ? SceneSaveState::Saved : SceneSaveState::Failed;
+  sceneSave_.message = error.empty() ? "saved scene " + sceneSave_.path : error;
 }
 
 bool ViewController::update(Clock::time_point now) {
@@ -111,13 +245,14 @@ bool ViewController::update(Clock::time_point now) {
     if (watch_.changed()) reload();
   }
   if (loading_.valid() && loading_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
-    apply(loading_.get());
+    install(loading_.get());
     if (reloadAgain_) {
       reloadAgain_ = false;
       reload();
     }
   }
   save_.poll(*session_);
+  pollSceneSave();
   progress_ = session_->progress(); // before the copy: the image has at least this much
   stale_ = false;
   return session_->copyImage(image_);

@@ -1,16 +1,19 @@
 // What the previewer does, apart from drawing: it owns the render session,
-// applies the user's edits to it (each one restarts refinement), reloads the
-// scene when its files change, saves, and once a frame takes a consistent
-// snapshot of the image and progress for the window. No GL, no ImGui: the
-// panels, the mouse and scripts all go through these calls.
+// applies the user's edits to it (each one restarts refinement) and keeps
+// their undo history, reloads the scene when its files change (keeping the
+// user's edits), saves the picture or the edited scene, and once a frame takes
+// a consistent snapshot of the image and progress for the window. No GL, no
+// ImGui: the panels, the mouse and scripts all go through these calls.
 #pragma once
 
 #include "file_watch.h"
 #include "save_job.h"
+#include "scene_edit.h"
 
 #include "core/render_session.h"
 
 #include <chrono>
+#include <deque>
 #include <future>
 #include <memory>
 #include <string>
@@ -24,22 +27,71 @@ struct ViewOptions {
   bool sizeFromScene = true; // follow the scene's `resolution` on reload (no --size)
   AccelKind accel = AccelKind::Groups;
   std::string savePath; // the Save field's initial text
+  // --eye/--lookat/--fov: the view to start from, as a camera edit over the
+  // file's camera from the start: reloads keep it, Reset camera goes to the
+  // file's camera.
+  std::optional<CameraSpec> camera;
 };
 
 class ViewController {
 public:
   using Clock = std::chrono::steady_clock;
 
-  // `warnings`: what loading `scene` reported (formatted), shown with the scene.
+  // `scene` as the files say it; `warnings`: what loading it reported
+  // (formatted), shown with the scene.
   ViewController(Scene scene, const ViewOptions& options, std::vector<std::string> warnings = {});
-  ~ViewController(); // waits for a reload in progress
+  ~ViewController(); // waits for a reload or a scene save in progress
 
-  // Edits: each cancels the work in flight and restarts refinement.
-  void setSettings(const RenderSettings& settings);
-  void setLight(std::size_t index, const Light& light); // 0-based
-  void setAmbient(const Color& ambient);
-  void setCamera(const CameraSpec& camera);
-  void resetCamera(); // back to the scene file's camera
+  // Edits. Every change of a value goes through apply(): it cancels the work
+  // in flight and restarts refinement (an edit that changes nothing does
+  // neither), and becomes one undo step. A LightEdit of a light the scene
+  // does not have throws std::out_of_range.
+  void apply(const SceneEdit& edit);
+  // One-line wrappers of apply(), for callers that edit one value.
+  void setSettings(const RenderSettings& settings) { apply(SettingsEdit{settings}); }
+  void setLight(std::size_t index, const Light& light) { apply(LightEdit{index, light}); }
+  void setAmbient(const Color& ambient) { apply(AmbientEdit{ambient}); }
+  void setCamera(const CameraSpec& camera) { apply(CameraEdit{camera}); }
+  void resetCamera() { apply(ResetCamera{}); }                     // back to the file's camera
+  void resetLight(std::size_t index) { apply(ResetLight{index}); } // back to the file's light
+  void revertToFile() { apply(RevertToFile{}); } // every scene value; the render settings stay
+
+  // Undo and redo (Ctrl+Z, Ctrl+Shift+Z) step through the states the edits
+  // made, restarting the render like any edit; a new edit drops what could be
+  // redone. At most kMaxUndoSteps steps are kept (the oldest go first).
+  //
+  // A continuous interaction (a mouse drag of the camera, a slider or a
+  // value being dragged) is one step: call beginGesture() when it starts and
+  // endGesture() when it ends; every edit in between changes the same step.
+  // A gesture that ends where it started leaves no step. Outside a gesture
+  // every edit is its own step.
+  static constexpr std::size_t kMaxUndoSteps = 1000;
+  bool undo(); // false when there is nothing to undo
+  bool redo();
+  bool canUndo() const { return at_ > 0; }
+  bool canRedo() const { return at_ + 1 < states_.size(); }
+  void beginGesture();
+  void endGesture();
+  bool inGesture() const { return gesture_; }
+
+  // What the user changed (the render settings and the edited scene values),
+  // and the scene values as the files say them: what the resets go back to.
+  // Both follow reloads.
+  const UserEdits& edits() const { return states_[at_]; }
+  const FileValues& fileValues() const { return file_; }
+
+  // What the reloads did with the user's edits, for the panel, until the
+  // user's next edit (or undo, redo): `kept` lists the edited values the last
+  // reload put over the re-read files ("camera", "ambient", "light 2");
+  // `dropped` the edits of lights that a file no longer has ("light 5"),
+  // which are gone from the undo history too. The render settings always
+  // stay and are not listed.
+  struct ReloadEdits {
+    std::vector<std::string> kept;
+    std::vector<std::string> dropped;
+  };
+  const ReloadEdits& keptEdits() const { return keptEdits_; }
+
   // Re-reads the scene from disk and builds its hierarchy on another thread
   // (seconds for 10^6 primitives), while the window keeps showing and
   // refining the current scene; update() puts the new one in its place. On
@@ -50,10 +102,25 @@ public:
   bool reloading() const { return loading_.valid(); }
   void save(const std::string& path) { save_.start(path); }
 
+  // Save scene as: writes the scene shown (the files with the user's edits
+  // over them) as one .sc file, on a helper thread; the window goes on. The
+  // file is flattened: every included file's contents are written into it,
+  // because the .sc language has no way to override the camera or a light
+  // that an included file sets, so a file that kept the includes could not
+  // hold the edits. (The writer keeps the push/pop groups.) A path that does
+  // not end in .sc or cannot be written fails at once; every failure is a
+  // state and a message, as for Save, never an exception.
+  enum class SceneSaveState { Idle, Writing, Saved, Failed };
+  void saveSceneAs(const std::string& path);
+  SceneSaveState sceneSaveState() const { return sceneSave_.state; }
+  bool sceneSaveBusy() const { return sceneSave_.state == SceneSaveState::Writing; }
+  // "saved scene view.sc", or why not.
+  const std::string& sceneSaveMessage() const { return sceneSave_.message; }
+
   // Once a frame, before drawing: reloads when a scene file changed (checked
-  // about twice a second), puts a reloaded scene in place, advances a save,
-  // and copies the image if the render published anything. Returns true when
-  // image() changed.
+  // about twice a second), puts a reloaded scene in place, advances the
+  // saves, and copies the image if the render published anything. Returns
+  // true when image() changed.
   bool update(Clock::time_point now = Clock::now());
 
   // The snapshot update() took: progress() was read before the image was
@@ -84,13 +151,33 @@ private:
     std::unique_ptr<Accel> accel;
     std::vector<std::string> errors, warnings;
   };
+  struct SceneSave {
+    SceneSaveState state = SceneSaveState::Idle;
+    std::string path;
+    std::string message;
+    std::future<std::string> writing; // the error message, empty on success
+  };
+
   static LoadedScene load(const std::string& path, AccelKind accel);
-  void apply(LoadedScene loaded);
+  void install(LoadedScene loaded);
+  UserEdits& current() { return states_[at_]; }
+  void record(UserEdits next); // a new state, or the gesture's step changed
+  void show();                 // puts the current state into the session
+  void fitHistoryTo(const Scene& scene);
+  void pollSceneSave();
 
   ViewOptions options_;
-  CameraSpec fileCamera_;
+  FileValues file_;
   std::unique_ptr<RenderSession> session_;
+  // The undo history: states_[at_] is shown; those before it can be undone
+  // back to, those after it redone.
+  std::deque<UserEdits> states_;
+  std::size_t at_ = 0;
+  bool gesture_ = false;     // between beginGesture() and endGesture()
+  bool gestureStep_ = false; // the open gesture has made its step (states_[at_])
+  ReloadEdits keptEdits_;
   SaveJob save_;
+  SceneSave sceneSave_;
   FileWatch watch_;
   Clock::time_point nextPoll_{};
   std::vector<std::string> sceneErrors_;

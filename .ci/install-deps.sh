@@ -15,6 +15,7 @@ packages=(
   libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev
   libosmesa6-dev                    # the display test draws offscreen through OSMesa
   xvfb xauth                        # the window tests start their own X server (xvfb-run)
+  xdotool                           # ... and drive the window with real mouse and key events
   # fuzzing the readers (.ci/fuzz.sh): clang with libFuzzer's runtime (only a
   # Recommends of clang-14) and llvm-symbolizer for readable stack traces
   clang-14 libclang-rt-14-dev llvm-14

@@ -41,7 +41,8 @@ struct RenderSession::Work {
   std::vector<std::uint8_t> displayLevel; // block size of the sample shown; kNoSample: stale
   SessionPhase phase = SessionPhase::Coarse;
   int level = kCoarsestLevel;
-  double sumMax = 0.0; // of max(r,g,b) over traced pixel centres
+  double sumMax = 0.0;       // of max(r,g,b) over traced pixel centres
+  double levelsAvgmax = 0.0; // sumMax / pass1Pixels when the last level completed
   long long pass1Pixels = 0;
   double avgmax = 0.0;
   long long supersampled = 0;
@@ -50,7 +51,8 @@ struct RenderSession::Work {
   RayCounts counts;
   RayCounts pass1Counts; // the counts when pass 1 completed, kept by a pass-2-only restart
   Clock::time_point start = Clock::now();
-  Clock::time_point end; // when the render finished: elapsed time stops there
+  Clock::time_point end;      // when the render finished: elapsed time stops there
+  Clock::time_point pass1End; // when pass 1 was complete (or kept from before)
   bool done = false;
   std::condition_variable doneChanged;
   std::string failure; // why the render stopped early, if it failed
@@ -84,6 +86,7 @@ void RenderSession::startWorkers(bool keepPass1) {
         work->display = work_->film.centre;
         std::fill(work->displayLevel.begin(), work->displayLevel.end(), std::uint8_t(1));
         work->sumMax = work_->sumMax;
+        work->levelsAvgmax = work_->levelsAvgmax;
         work->pass1Pixels = work_->pass1Pixels;
         work->counts = work_->pass1Counts;
         work->pass1Counts = work_->pass1Counts;
@@ -228,7 +231,12 @@ void RenderSession::run(Work& work, bool keepPass1) {
 
   if (!keepPass1) {
     for (int level = kCoarsestLevel; level >= 1; level /= 2) {
-      publish([&] { work.level = level; });
+      publish([&] {
+        work.level = level;
+        // Levels run one after another: every centre traced so far belongs
+        // to a completed level.
+        if (work.pass1Pixels > 0) work.levelsAvgmax = work.sumMax / double(work.pass1Pixels);
+      });
       // Any kBundleSide * level consecutive pixels hold kBundleSide multiples of
       // `level`: a block of that side has at most a full bundle of new pixels.
       sampleTiles(
@@ -272,6 +280,8 @@ void RenderSession::run(Work& work, bool keepPass1) {
   const double avgmax = averageMax(work.film.centre);
   publish([&] {
     work.avgmax = avgmax;
+    work.levelsAvgmax = avgmax;
+    work.pass1End = Clock::now();
     work.phase = SessionPhase::Antialias;
     work.pass1Counts = work.counts;
   });
@@ -331,9 +341,14 @@ SessionProgress RenderSession::progress() const {
   const double pass1 = pixels > 0 ? double(w.pass1Pixels) / pixels : 1.0;
   const double pass2 = double(w.pass2TilesDone) / double(std::max(1LL, w.tileCount));
   p.fraction = w.done ? 1.0 : 0.5 * pass1 + 0.5 * pass2;
+  p.pass1Fraction = pass1;
+  p.pass2Fraction = w.done ? 1.0 : pass2;
+  if (w.phase != SessionPhase::Coarse)
+    p.pass1Seconds = std::chrono::duration<double>(w.pass1End - w.start).count();
   p.pass1Pixels = w.pass1Pixels;
   p.supersampledPixels = w.supersampled;
   p.liveAvgmax = w.pass1Pixels > 0 ? w.sumMax / double(w.pass1Pixels) : 0.0;
+  p.levelsAvgmax = w.levelsAvgmax;
   p.avgmax = w.phase == SessionPhase::Coarse ? p.liveAvgmax : w.avgmax;
   p.counts = w.counts;
   p.elapsedSeconds =

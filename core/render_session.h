@@ -44,13 +44,20 @@ enum class SessionPhase {
 // A consistent view of how far the render got, for live statistics.
 struct SessionProgress {
   SessionPhase phase = SessionPhase::Coarse;
-  int level = 8;             // block size of the coarse level in progress (8, 4, 2, 1)
-  double fraction = 0.0;     // of the whole render (pass 1 and pass 2), 0..1
-  long long pass1Pixels = 0; // pixel centres traced so far
+  int level = 8;              // block size of the coarse level in progress (8, 4, 2, 1)
+  double fraction = 0.0;      // of the whole render (pass 1 and pass 2), 0..1
+  double pass1Fraction = 0.0; // of pass 1's pixel centres traced, 0..1
+  double pass2Fraction = 0.0; // of pass 2's tiles done, 0..1
+  double pass1Seconds = 0.0;  // how long pass 1 took, once it is complete
+  long long pass1Pixels = 0;  // pixel centres traced so far
   long long supersampledPixels = 0;
   double liveAvgmax = 0.0; // mean of max(r,g,b) over the pixel centres traced so far
-  double avgmax = 0.0;     // pass 1's avgmax once pass 1 is complete, else liveAvgmax
-  RayCounts counts;        // rays traced since the last restart
+  // The same over the coarse levels completed so far (0 before the first): a
+  // uniform subsample of the image, so it does not drift with the order in
+  // which a level's tiles finish, as liveAvgmax does.
+  double levelsAvgmax = 0.0;
+  double avgmax = 0.0; // pass 1's avgmax once pass 1 is complete, else liveAvgmax
+  RayCounts counts;    // rays traced since the last restart
   double elapsedSeconds = 0.0;
   std::uint64_t restarts = 0; // how many times an edit restarted the render
 };

@@ -24,7 +24,7 @@ struct BenchCommandOptions {
   double budget = 2.0; // seconds per throughput figure before sampling
   bool scaling = true; // run the scaling series
   std::size_t scalingMax = 1000000;
-  std::string data; // write the scaling series here (for gnuplot)
+  std::string data;     // write the scaling series here (for gnuplot)
   bool latency = false; // measure the previewer's answer to a light move instead
 };
 

@@ -1,6 +1,7 @@
 #include "image_view.h"
 
 #include "camera_controls.h"
+#include "input_latch.h"
 #include "panels.h"
 
 #include <imgui.h>
@@ -18,11 +19,14 @@ constexpr double kZoomPerWheelStep = 0.9;
 
 } // namespace
 
-ImageLayout layoutImage(float windowWidth, float windowHeight, float panelWidth, int imageWidth,
-                        int imageHeight) {
+float statusHeight(const WindowState& state) { return kStatusHeight * state.uiScale; }
+
+ImageLayout layoutImage(float windowWidth, float windowHeight, const WindowState& state,
+                        int imageWidth, int imageHeight) {
   ImageLayout l;
-  l.areaWidth = std::max(1.0f, windowWidth - panelWidth);
-  l.areaHeight = std::max(1.0f, windowHeight - kStatusHeight);
+  l.windowWidth = windowWidth;
+  l.areaWidth = std::max(1.0f, windowWidth - panelWidth(state));
+  l.areaHeight = std::max(1.0f, windowHeight - statusHeight(state));
   l.imageWidth = imageWidth;
   l.imageHeight = imageHeight;
   if (imageWidth <= 0 || imageHeight <= 0) return l;
@@ -35,29 +39,42 @@ ImageLayout layoutImage(float windowWidth, float windowHeight, float panelWidth,
 
 void navigateWithMouse(ViewController& c, const ImageLayout& l, ImageDrag& drag) {
   const ImGuiIO& io = ImGui::GetIO();
-  const bool inside = io.MousePos.x >= 0.0f && io.MousePos.x < l.areaWidth &&
-                      io.MousePos.y >= 0.0f && io.MousePos.y < l.areaHeight;
-  const bool onImage = inside && !io.WantCaptureMouse; // not over or busy with the panel
+  const auto inArea = [&](glm::dvec2 p) {
+    return p.x >= 0.0 && p.x < double(l.areaWidth) && p.y >= 0.0 && p.y < double(l.areaHeight);
+  };
+  const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+  const bool onImage = inArea(mouse) && !io.WantCaptureMouse; // not over or busy with the panel
   const CameraSpec& camera = c.scene().camera;
+  glm::dvec2 delta(io.MouseDelta.x, io.MouseDelta.y);
   if (drag.button < 0) {
-    for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
-      if (onImage && ImGui::IsMouseClicked(button)) drag.button = button;
-    if (onImage && io.MouseWheel != 0.0f)
-      c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
-    return;
+    for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle}) {
+      if (!onImage || !ImGui::IsMouseClicked(button)) continue;
+      drag.button = button;
+      c.beginGesture(); // the whole drag is one undo step
+      // The motion since the press counts (under load a whole drag can fit in
+      // one frame); the pointer's jump to where it was pressed does not.
+      delta = mouse - pressedAt(button).value_or(mouse);
+    }
+    if (drag.button < 0) {
+      if (onImage && io.MouseWheel != 0.0f)
+        c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
+      return;
+    }
+  }
+  // The motion up to the release counts too.
+  const double dx = delta.x / double(l.zoom); // image pixels
+  const double dy = delta.y / double(l.zoom);
+  if (dx != 0.0 || dy != 0.0) {
+    if (drag.button == ImGuiMouseButton_Left && !io.KeyShift) {
+      // Dragging right turns the scene right: the eye goes the other way.
+      c.setCamera(orbit(camera, -dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel));
+    } else {
+      c.setCamera(pan(camera, dx, dy, c.settings().height));
+    }
   }
   if (!ImGui::IsMouseDown(drag.button)) {
     drag.button = -1;
-    return;
-  }
-  const double dx = double(io.MouseDelta.x) / double(l.zoom); // image pixels
-  const double dy = double(io.MouseDelta.y) / double(l.zoom);
-  if (dx == 0.0 && dy == 0.0) return;
-  if (drag.button == ImGuiMouseButton_Left && !io.KeyShift) {
-    // Dragging right turns the scene right: the eye goes the other way.
-    c.setCamera(orbit(camera, -dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel));
-  } else {
-    c.setCamera(pan(camera, dx, dy, c.settings().height));
+    c.endGesture();
   }
 }
 
@@ -98,23 +115,34 @@ void drawLightMarkers(const ViewController& c, const ImageLayout& l) {
   draw->PopClipRect();
 }
 
-void drawStatusLine(const ViewController& c, const ImageLayout& l) {
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  const float y = l.areaHeight;
+void drawStatusLine(const ViewController& c, const WindowState& state, const ImageLayout& l) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float y = l.areaHeight, h = statusHeight(state);
   const bool errors = !c.sceneErrors().empty();
-  draw->AddRectFilled(ImVec2(0.0f, y), ImVec2(l.areaWidth, y + kStatusHeight),
+  draw->AddRectFilled(ImVec2(0.0f, y), ImVec2(l.windowWidth, y + h),
                       errors ? IM_COL32(110, 30, 30, 255) : IM_COL32(30, 32, 38, 255));
   const SessionProgress& p = c.progress();
-  const float barWidth = l.areaWidth * float(p.fraction);
-  if (p.phase != SessionPhase::Done)
-    draw->AddRectFilled(ImVec2(0.0f, y + kStatusHeight - 3.0f), ImVec2(barWidth, y + kStatusHeight),
+  if (p.phase != SessionPhase::Done) {
+    const float barWidth = l.windowWidth * float(state.estimate.timeFraction());
+    draw->AddRectFilled(ImVec2(0.0f, y + h - 3.0f), ImVec2(barWidth, y + h),
                         IM_COL32(90, 150, 255, 255));
-  char text[256];
-  std::snprintf(text, sizeof text, "%s    avgmax %.4g  scale %.4g    %s", phaseText(p).c_str(),
-                p.avgmax, double(c.exposure()),
-                errors ? "scene errors: see the panel; showing the last good scene"
-                       : (l.zoom < 1.0f ? "scaled to fit" : "1:1"));
-  draw->AddText(ImVec2(8.0f, y + 5.0f), IM_COL32(225, 228, 235, 255), text);
+  }
+  std::string text = phaseText(p) + "   " + state.estimate.text();
+  char exposure[96];
+  std::snprintf(exposure, sizeof exposure, "   avgmax %.4g%s%s", state.exposure.avgmax(),
+                state.exposure.locked() ? " (locked)" : "",
+                state.exposure.ev() != 0.0 ? " with EV offset" : "");
+  text += exposure;
+  char zoom[32];
+  std::snprintf(zoom, sizeof zoom, l.zoom == 1.0f ? "   1:1" : "   %.0f%% (fit)",
+                100.0 * double(l.zoom));
+  text += zoom;
+  if (errors) text += "   scene errors: see the panel; showing the last good scene";
+  if (!state.note.empty()) text += "   " + state.note;
+  const ImVec2 at(8.0f * state.uiScale, y + 0.5f * (h - ImGui::GetFontSize()));
+  draw->PushClipRect(ImVec2(0.0f, y), ImVec2(l.windowWidth, y + h));
+  draw->AddText(at, IM_COL32(225, 228, 235, 255), text.c_str());
+  draw->PopClipRect();
 }
 
 } // namespace prism

@@ -1,10 +1,13 @@
 #include "panels.h"
 
+#include "number_text.h"
+#include "widgets.h"
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -18,69 +21,108 @@ const ImVec4 kDimColour{0.62f, 0.64f, 0.68f, 1.0f};
 // Drag speed for a value of about `magnitude`: ~200 pixels of mouse to double it.
 float dragSpeed(double magnitude) { return float(std::max(1e-3, magnitude * 0.005)); }
 
+void dimText(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+void errorText(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+// Applies an edit a widget made. While a widget is held (a slider or a
+// number being dragged), its edits make one undo step, which ends when it is
+// let go (see drawControlPanel).
+template <class Apply> void edit(ViewController& c, WindowState& state, Apply&& apply) {
+  if (ImGui::IsAnyItemActive() && !state.panelGesture) {
+    c.beginGesture();
+    state.panelGesture = true;
+  }
+  apply();
+}
+
+// What the last reload did with the user's edits, until the next edit.
+void keptEditsText(const ViewController& c) {
+  const auto list = [](const std::vector<std::string>& items) {
+    std::string text;
+    for (const std::string& item : items)
+      text += (text.empty() ? "" : ", ") + item;
+    return text;
+  };
+  const ViewController::ReloadEdits& kept = c.keptEdits();
+  if (!kept.kept.empty()) dimText("Kept your edits over the reloaded file: " + list(kept.kept));
+  if (!kept.dropped.empty())
+    dimText("Dropped your edits of what the file no longer has: " + list(kept.dropped));
+}
+
 void sceneSection(ViewController& c) {
   const std::string name = std::filesystem::path(c.scenePath()).filename().string();
-  ImGui::Text("%s", name.c_str());
+  ImGui::TextWrapped("%s", name.c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.scenePath().c_str());
   const Scene& s = c.scene();
+  dimText(withSeparators((long long)s.primitiveCount()) + " primitives, " +
+          withSeparators((long long)s.lights.size()) + " lights");
+  const ui::Scope scope("Scene");
+  if (ui::button("Reload (R)")) c.reload();
   ImGui::SameLine();
-  ImGui::TextColored(kDimColour, "%zu primitives, %zu lights", s.primitiveCount(), s.lights.size());
-  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 90.0f);
-  if (ImGui::Button("Reload (R)", ImVec2(90.0f, 0.0f))) c.reload();
-  if (c.reloading()) ImGui::TextColored(kDimColour, "Reading the scene files...");
-  if (!c.sceneWarnings().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kDimColour);
-    for (const std::string& w : c.sceneWarnings())
-      ImGui::TextWrapped("%s", w.c_str());
-    ImGui::PopStyleColor();
-  }
+  ImGui::BeginDisabled(!c.canUndo());
+  if (ui::button("Undo (Ctrl+Z)")) c.undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!c.canRedo());
+  if (ui::button("Redo")) c.redo();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
+  if (ui::button("Back to the file's values")) c.revertToFile();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the camera, the lights and ambient as the scene file says (undoable)");
+  if (c.reloading()) dimText("Reading the scene files...");
+  keptEditsText(c);
+  for (const std::string& w : c.sceneWarnings())
+    dimText(w);
   if (const std::string failure = c.renderFailure(); !failure.empty())
-    ImGui::TextColored(kErrorColour, "The render failed: %s", failure.c_str());
+    errorText("The render failed: " + failure);
   if (!c.sceneErrors().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
-    ImGui::TextWrapped("The scene has errors; showing the last good one:");
+    errorText("The scene has errors; showing the last good one:");
     for (const std::string& e : c.sceneErrors())
-      ImGui::TextWrapped("%s", e.c_str());
-    ImGui::PopStyleColor();
+      errorText(e);
   }
 }
 
-void renderSection(ViewController& c) {
+void renderSection(ViewController& c, WindowState& state) {
   RenderSettings s = c.settings();
   bool changed = false;
-  changed |= ImGui::SliderInt("max depth", &s.maxDepth, 1, std::max(16, s.maxDepth), "%d",
-                              ImGuiSliderFlags_AlwaysClamp);
+  changed |= ui::sliderInt("max depth", &s.maxDepth, 1, std::max(16, s.maxDepth));
   float thresh = float(s.thresh);
-  if (ImGui::SliderFloat("threshold", &thresh, 0.0f, 1.0f, "%.3f",
-                         ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+  if (ui::sliderFloat("threshold", &thresh, 0.0f, 1.0f, "%.3f",
+                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
     s.thresh = double(thresh);
     changed = true;
   }
-  changed |= ImGui::Checkbox("jitter sub-samples", &s.jitter);
-  ImGui::SameLine();
-  ImGui::TextColored(kDimColour, "   image %d x %d", s.width, s.height);
-  if (changed) c.setSettings(s);
+  changed |= ui::checkbox("jitter sub-samples", &s.jitter);
+  dimText("image " + std::to_string(s.width) + " x " + std::to_string(s.height));
+  if (changed) edit(c, state, [&] { c.setSettings(s); });
 }
 
-void lightsSection(ViewController& c) {
+void lightsSection(ViewController& c, WindowState& state) {
   const Scene& scene = c.scene();
   Color ambient = scene.ambient;
-  if (ImGui::DragScalarN("ambient", ImGuiDataType_Double, &ambient[0], 3,
-                         dragSpeed(std::max(0.05, maxComponent(ambient))), nullptr, nullptr,
-                         "%.3f")) {
-    c.setAmbient(glm::max(ambient, Color(0.0)));
+  if (ui::dragDoubles("ambient", &ambient[0], 3, dragSpeed(std::max(0.05, maxComponent(ambient))),
+                      "%.3f")) {
+    edit(c, state, [&] { c.setAmbient(glm::max(ambient, Color(0.0))); });
   }
   const double extent = glm::length(scene.camera.eye - scene.camera.lookat);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     Light light = scene.lights[i];
-    ImGui::PushID(int(i));
-    char label[32];
-    std::snprintf(label, sizeof label, "light %zu", i + 1);
-    bool changed = ImGui::DragScalarN(label, ImGuiDataType_Double, &light.position[0], 3,
-                                      dragSpeed(extent), nullptr, nullptr, "%.2f");
+    const std::string label = "light " + std::to_string(i + 1);
+    const ui::Scope scope(label);
+    bool changed = ui::dragDoubles(label.c_str(), &light.position[0], 3, dragSpeed(extent), "%.2f");
     const double peak = std::max(1e-9, maxComponent(light.intensity));
-    if (ImGui::DragScalarN("##intensity", ImGuiDataType_Double, &light.intensity[0], 3,
-                           dragSpeed(peak), nullptr, nullptr, "%.2f")) {
+    if (ui::dragDoubles("##intensity", &light.intensity[0], 3, dragSpeed(peak), "%.2f")) {
       light.intensity = glm::max(light.intensity, Color(0.0)); // SPEC 4: never negative
       changed = true;
     }
@@ -91,41 +133,106 @@ void lightsSection(ViewController& c) {
     ImGui::ColorButton("##colour", swatch, ImGuiColorEditFlags_NoTooltip, ImVec2(12.0f, 12.0f));
     ImGui::SameLine(0.0f, 4.0f);
     ImGui::TextUnformatted("intensity");
-    if (changed) c.setLight(i, light);
-    ImGui::PopID();
+    if (changed) edit(c, state, [&] { c.setLight(i, light); });
+    if (ui::button("reset")) c.resetLight(i);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the file's position and intensity");
   }
 }
 
-void cameraSection(ViewController& c) {
-  const CameraSpec& cam = c.scene().camera;
-  ImGui::TextColored(kDimColour, "eye %.2f %.2f %.2f   lookat %.2f %.2f %.2f", cam.eye.x, cam.eye.y,
-                     cam.eye.z, cam.lookat.x, cam.lookat.y, cam.lookat.z);
-  if (ImGui::Button("Reset (Home)")) c.resetCamera();
+// Whether `camera` can be rendered (SPEC 1.6): a view direction, `up` not
+// along it, a field of view strictly between 0 and 180 degrees.
+bool usable(const CameraSpec& camera) {
+  const Vec3 forward = camera.lookat - camera.eye;
+  if (!(camera.fov > 0.0 && camera.fov < 180.0) || forward == Vec3(0.0)) return false;
+  const Vec3 side = glm::cross(glm::normalize(forward), glm::normalize(camera.up));
+  return isFinite(side) && glm::length(side) > 1e-9;
+}
+
+void cameraSection(ViewController& c, WindowState& state) {
+  CameraSpec cam = c.scene().camera;
+  const double extent = std::max(1e-9, glm::length(cam.eye - cam.lookat));
+  bool changed = ui::dragDoubles("eye", &cam.eye[0], 3, dragSpeed(extent), "%.3f");
+  changed |= ui::dragDoubles("lookat", &cam.lookat[0], 3, dragSpeed(extent), "%.3f");
+  float fov = float(cam.fov);
+  if (ui::sliderFloat("fov", &fov, 1.0f, 179.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp)) {
+    cam.fov = double(fov);
+    changed = true;
+  }
+  // An edit that would leave no view (eye on lookat, up along the view) is
+  // not applied.
+  if (changed && usable(cam)) edit(c, state, [&] { c.setCamera(cam); });
+  if (ui::button("Reset camera (Home)")) c.resetCamera();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene file's camera");
-  ImGui::SameLine();
-  ImGui::TextColored(kDimColour, "drag: orbit, right-drag: pan, wheel: zoom");
+  dimText("On the picture: drag to orbit, right-drag or shift-drag to pan, wheel to zoom.");
 }
 
-void displaySection(ViewController& c, PanelState& state) {
-  ImGui::Checkbox("supersampled pixels (O)", &state.overlay);
-  ImGui::SameLine();
-  ImGui::Checkbox("lights (L)", &state.markers);
+// How the picture is exposed: SPEC's automatic 128 / avgmax, or locked at the
+// current avgmax; either offset by EV stops. The text below always has the
+// same number of lines, so the panel never jumps as the render refines.
+void displaySection(ViewController& c, WindowState& state) {
+  ui::checkbox("supersampled pixels (O)", &state.overlay);
+  ui::checkbox("lights (L)", &state.markers);
+  bool locked = state.exposure.locked();
+  if (ui::checkbox("lock exposure (E)", &locked)) state.exposure.setLocked(locked);
+  float ev = float(state.exposure.ev());
+  if (ui::sliderFloat("EV offset", &ev, -5.0f, 5.0f, "%+.1f")) state.exposure.setEv(double(ev));
+  ImGui::Text("avgmax %.5g   scale %.5g", state.exposure.avgmax(), double(state.exposure.scale()));
   const SessionProgress& p = c.progress();
-  ImGui::Text("avgmax %.5g   scale %.5g (128 / avgmax)", p.avgmax, double(c.exposure()));
-  if (p.phase == SessionPhase::Coarse)
-    ImGui::TextColored(kDimColour, "live: from the %lld pixel centres so far", p.pass1Pixels);
+  const char* source = state.exposure.locked()           ? "locked: the render does not change it"
+                       : p.phase != SessionPhase::Coarse ? "pass 1's avgmax (SPEC)"
+                       : state.exposure.holding()        ? "held from before the edit"
+                                                         : "from the complete coarse levels";
+  dimText(source);
 }
 
-void statisticsSection(ViewController& c, const FrameStats& frames) {
+void saveSection(ViewController& c, WindowState& state) {
+  ImGui::SetNextItemWidth(-1.0f);
+  ui::inputText("##path", &state.savePath);
+  const bool busy = c.saveJob().busy();
+  ImGui::BeginDisabled(busy || state.savePath.empty());
+  if (ui::button("Save picture (Ctrl+S)")) savePicture(c, state);
+  ImGui::EndDisabled();
+  const SaveJob& job = c.saveJob();
+  if (job.state() == SaveJob::State::WaitingForRender) {
+    ImGui::ProgressBar(float(state.estimate.timeFraction()), ImVec2(-1.0f, 0.0f),
+                       "finishing the render...");
+  } else if (job.state() == SaveJob::State::Failed) {
+    errorText(job.message());
+  } else if (job.state() != SaveJob::State::Idle) {
+    ImGui::TextWrapped("%s", job.message().c_str());
+  }
+  // The camera and lights as edited here, as a scene file (includes are
+  // written out: see ViewController::saveSceneAs).
+  ImGui::SetNextItemWidth(-1.0f);
+  ui::inputText("##scene path", &state.scenePath);
+  ImGui::BeginDisabled(c.sceneSaveBusy() || state.scenePath.empty());
+  if (ui::button("Save scene as .sc")) c.saveSceneAs(state.scenePath);
+  ImGui::EndDisabled();
+  if (c.sceneSaveState() == ViewController::SceneSaveState::Failed) {
+    errorText(c.sceneSaveMessage());
+  } else if (c.sceneSaveState() != ViewController::SceneSaveState::Idle) {
+    ImGui::TextWrapped("%s", c.sceneSaveMessage().c_str());
+  }
+}
+
+void statisticsSection(ViewController& c, WindowState& state, const FrameStats& frames) {
   const SessionProgress& p = c.progress();
   const RenderSettings s = c.settings();
-  ImGui::ProgressBar(float(p.fraction), ImVec2(-1.0f, 0.0f), phaseText(p).c_str());
+  char progress[96];
+  std::snprintf(progress, sizeof progress, "%s   %.0f%%", phaseText(p).c_str(),
+                100.0 * state.estimate.timeFraction());
+  ImGui::ProgressBar(float(state.estimate.timeFraction()), ImVec2(-1.0f, 0.0f), progress);
+  ImGui::TextUnformatted(state.estimate.text().c_str());
   const double pixels = std::max(1.0, double(s.width) * double(s.height));
   const RayCounts& r = p.counts;
   const double seconds = std::max(p.elapsedSeconds, 1e-9);
-  ImGui::Text("elapsed %.2f s   %.2f M rays/s", p.elapsedSeconds,
-              double(r.total()) / seconds * 1e-6);
-  if (ImGui::BeginTable("rays", 4, ImGuiTableFlags_SizingStretchProp)) {
+  ImGui::Text("%.2f M rays/s", double(r.total()) / seconds * 1e-6);
+  // Fixed column widths: stretched ones have no width in the first frame.
+  const float column = 0.25f * ImGui::GetContentRegionAvail().x;
+  if (ImGui::BeginTable("rays", 4, ImGuiTableFlags_SizingFixedFit)) {
+    for (int i = 0; i < 4; ++i)
+      ImGui::TableSetupColumn(nullptr, ImGuiTableColumnFlags_WidthFixed,
+                              i % 2 == 0 ? 1.4f * column : 0.6f * column);
     // Rays per pixel by kind, two kinds a row.
     auto cell = [&](const char* kind, double count) {
       ImGui::TableNextColumn();
@@ -138,90 +245,142 @@ void statisticsSection(ViewController& c, const FrameStats& frames) {
     cell("shadow", double(r.shadow));
     cell("reflected", double(r.reflected));
     cell("transmitted", double(r.transmitted));
-    cell("all rays / pixel", double(r.total()));
+    cell("all / pixel", double(r.total()));
     ImGui::EndTable();
   }
-  ImGui::Text("supersampled %lld pixels (%.1f%%)", p.supersampledPixels,
+  ImGui::Text("supersampled %s pixels (%.1f%%)", withSeparators(p.supersampledPixels).c_str(),
               100.0 * double(p.supersampledPixels) / pixels);
-  ImGui::TextColored(kDimColour, "restarts %llu   window %.0f fps", (unsigned long long)p.restarts,
-                     frames.recentFps());
+  ImGui::TextColored(kDimColour, "restarts %s   window %.0f fps",
+                     withSeparators((long long)p.restarts).c_str(), frames.recentFps());
 }
 
-void saveSection(ViewController& c, PanelState& state) {
-  ImGui::SetNextItemWidth(-70.0f);
-  ImGui::InputText("##path", &state.savePath);
-  ImGui::SameLine();
-  const bool busy = c.saveJob().busy();
-  ImGui::BeginDisabled(busy || state.savePath.empty());
-  if (ImGui::Button("Save", ImVec2(-1.0f, 0.0f))) c.save(state.savePath);
-  ImGui::EndDisabled();
-  const SaveJob& job = c.saveJob();
-  if (job.state() == SaveJob::State::WaitingForRender) {
-    ImGui::ProgressBar(float(c.progress().fraction), ImVec2(-1.0f, 0.0f),
-                       "finishing the render...");
-  } else if (job.state() == SaveJob::State::Failed) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
-    ImGui::TextWrapped("%s", job.message().c_str());
-    ImGui::PopStyleColor();
-  } else if (job.state() != SaveJob::State::Idle) {
-    ImGui::TextWrapped("%s", job.message().c_str());
-  }
-}
+// Every key and mouse action of the window, for the F1 overlay.
+struct KeyHelp {
+  const char* keys;
+  const char* action;
+};
+constexpr KeyHelp kKeys[] = {
+    {"left drag on the picture", "orbit the camera around lookat"},
+    {"right drag, middle drag, shift + left drag", "pan: the point under the mouse stays under it"},
+    {"mouse wheel", "zoom: move the eye toward or away from lookat"},
+    {"Home", "back to the scene file's camera"},
+    {"R, F5", "reload the scene files"},
+    {"O", "tint the supersampled pixels"},
+    {"L", "show the lights"},
+    {"E", "lock or unlock the exposure"},
+    {"Tab", "hide or show the panel"},
+    {"F1", "this help"},
+    {"Ctrl+Z", "undo the last edit (a whole drag is one)"},
+    {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
+    {"Ctrl+S", "save the final picture"},
+    {"Ctrl+Q", "quit"},
+};
 
 } // namespace
 
+float panelWidth(const WindowState& state) {
+  return state.panelVisible ? kPanelWidth * state.uiScale : 0.0f;
+}
+
 std::string phaseText(const SessionProgress& p) {
-  char text[96];
   switch (p.phase) {
   case SessionPhase::Coarse:
-    std::snprintf(text, sizeof text, "pass 1, %dx%d level   %.0f%%", p.level, p.level,
-                  100.0 * p.fraction);
-    break;
-  case SessionPhase::Antialias:
-    std::snprintf(text, sizeof text, "pass 2, antialiasing   %.0f%%", 100.0 * p.fraction);
-    break;
-  case SessionPhase::Done:
-    std::snprintf(text, sizeof text, "done in %.2f s", p.elapsedSeconds);
-    break;
+    return "pass 1, " + std::to_string(p.level) + "x" + std::to_string(p.level) + " level";
+  case SessionPhase::Antialias: return "pass 2, antialiasing";
+  case SessionPhase::Done: break;
   }
+  char text[48];
+  std::snprintf(text, sizeof text, "done in %.2f s", p.elapsedSeconds);
   return text;
 }
 
-void drawControlPanel(ViewController& c, PanelState& state, const FrameStats& frames, float width,
+void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& frames, float width,
                       float height) {
-  ImGui::SetNextWindowPos(ImVec2(width - kPanelWidth, 0.0f));
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height));
+  if (!state.panelVisible) return;
+  const float panel = panelWidth(state);
+  ImGui::SetNextWindowPos(ImVec2(width - panel, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(panel, height));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar;
   ImGui::Begin("Prism", nullptr, flags);
-  ImGui::PushItemWidth(-110.0f); // room for the labels
-  auto section = [](const char* title) {
-    return ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen);
-  };
+  // Tab belongs to the window (it hides the panel); ImGui would otherwise
+  // move the keyboard into the next text field with it.
+  ImGui::PushAllowKeyboardFocus(false);
+  ImGui::PushItemWidth(-110.0f * state.uiScale); // room for the labels
   sceneSection(c);
-  if (section("Render")) renderSection(c);
-  if (section("Lights")) lightsSection(c);
-  if (section("Camera")) cameraSection(c);
-  if (section("Display")) displaySection(c, state);
-  if (section("Save")) saveSection(c, state);
-  if (section("Statistics")) statisticsSection(c, frames);
+  // Each section's widgets sit in a scope of its own, so that no widget shares
+  // an ImGui id with its section's header (the Save button did, and was dead).
+  const auto section = [](const char* title, auto&& draw) {
+    if (!ui::collapsingHeader(title)) return;
+    const ui::Scope scope(title);
+    draw();
+  };
+  section("Render", [&] { renderSection(c, state); });
+  section("Lights", [&] { lightsSection(c, state); });
+  section("Camera", [&] { cameraSection(c, state); });
+  section("Display", [&] { displaySection(c, state); });
+  section("Save", [&] { saveSection(c, state); });
+  section("Statistics", [&] { statisticsSection(c, state, frames); });
   ImGui::PopItemWidth();
+  ImGui::PopAllowKeyboardFocus();
+  if (state.panelGesture && !ImGui::IsAnyItemActive()) { // the widget was let go
+    c.endGesture();
+    state.panelGesture = false;
+  }
   ImGui::End();
 }
 
-void handleShortcuts(ViewController& c, PanelState& state) {
+void drawHelp(WindowState& state, float width, float height) {
+  if (!state.showHelp) return;
+  const float w = std::min(width - 40.0f, 560.0f * state.uiScale);
+  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(w, 0.0f));
+  ImGui::Begin("Keys and mouse (F1)", &state.showHelp,
+               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_AlwaysAutoResize);
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingStretchProp)) {
+    for (const KeyHelp& k : kKeys) {
+      ImGui::TableNextColumn();
+      ImGui::TextColored(kDimColour, "%s", k.keys);
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped("%s", k.action);
+    }
+    ImGui::EndTable();
+  }
+  {
+    const ui::Scope scope("Help");
+    if (ui::button("Close (F1)")) state.showHelp = false;
+  }
+  ImGui::End();
+}
+
+void savePicture(ViewController& c, WindowState& state) {
+  if (state.savePath.empty()) return;
+  c.save(state.savePath);
+  state.note =
+      c.sceneErrors().empty() ? "" : "the scene files have errors: saving the last good scene";
+}
+
+void handleShortcuts(ViewController& c, WindowState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
   // In ImGui 1.86 the GLFW backend indexes io.KeysDown by GLFW key code.
+  const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   if (io.KeyCtrl) {
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && !state.savePath.empty()) c.save(state.savePath);
-    if (ImGui::IsKeyPressed(GLFW_KEY_Q, false)) state.quit = true;
+    if (pressed(GLFW_KEY_S)) savePicture(c, state);
+    if (pressed(GLFW_KEY_Q)) state.quit = true;
+    if (pressed(GLFW_KEY_Z) && !io.KeyShift) c.undo();
+    if ((pressed(GLFW_KEY_Z) && io.KeyShift) || pressed(GLFW_KEY_Y)) c.redo();
     return;
   }
-  if (ImGui::IsKeyPressed(GLFW_KEY_R, false) || ImGui::IsKeyPressed(GLFW_KEY_F5, false)) c.reload();
-  if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) state.overlay = !state.overlay;
-  if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) state.markers = !state.markers;
-  if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) c.resetCamera();
+  if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_F5)) c.reload();
+  if (pressed(GLFW_KEY_O)) state.overlay = !state.overlay;
+  if (pressed(GLFW_KEY_L)) state.markers = !state.markers;
+  if (pressed(GLFW_KEY_E)) state.exposure.setLocked(!state.exposure.locked());
+  if (pressed(GLFW_KEY_TAB)) state.panelVisible = !state.panelVisible;
+  if (pressed(GLFW_KEY_F1)) state.showHelp = !state.showHelp;
+  if (pressed(GLFW_KEY_HOME)) c.resetCamera();
 }
 
 } // namespace prism

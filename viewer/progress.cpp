@@ -18,7 +18,8 @@ void ProgressReporter::update(const RenderProgress& progress) {
   const auto now = Clock::now();
   if (now - start_ < std::chrono::seconds(1)) return;
   // A terminal line can be redrawn often; a log file gets a line every 5 s.
-  const auto interval = terminal_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000);
+  const auto interval =
+      terminal_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000);
   if (printed_ && now - lastPrint_ < interval) return;
   lastPrint_ = now;
   printed_ = true;

@@ -4,6 +4,7 @@
 #include "core/image_io.h"
 
 #include <chrono>
+#include <iostream>
 
 namespace prism {
 
@@ -18,6 +19,14 @@ void writeRenderResult(const std::filesystem::path& path, const RenderResult& re
   }
 }
 
+// Shown in the panel, and printed for whoever started the previewer from a
+// terminal (as scene errors are).
+void SaveJob::fail(const std::string& message) {
+  state_ = State::Failed;
+  message_ = message;
+  std::cerr << "prism: error: " << message << "\n";
+}
+
 SaveJob::~SaveJob() {
   if (writing_.valid()) writing_.wait();
 }
@@ -28,8 +37,7 @@ void SaveJob::start(const std::filesystem::path& path) {
   try {
     checkWritable(path);
   } catch (const std::exception& error) {
-    state_ = State::Failed;
-    message_ = error.what();
+    fail(error.what());
     return;
   }
   state_ = State::WaitingForRender;
@@ -44,8 +52,7 @@ void SaveJob::poll(RenderSession& session) {
     try {
       result = std::make_shared<RenderResult>(session.waitForResult());
     } catch (const std::exception& error) { // the render failed: nothing to write
-      state_ = State::Failed;
-      message_ = error.what();
+      fail(error.what());
       return;
     }
     message_ = "writing " + path_.string();
@@ -62,8 +69,12 @@ void SaveJob::poll(RenderSession& session) {
   if (state_ == State::Writing &&
       writing_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
     const std::string error = writing_.get();
-    state_ = error.empty() ? State::Saved : State::Failed;
-    message_ = error.empty() ? "saved " + path_.string() : error;
+    if (error.empty()) {
+      state_ = State::Saved;
+      message_ = "saved " + path_.string();
+    } else {
+      fail(error);
+    }
   }
 }
 

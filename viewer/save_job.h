@@ -37,6 +37,8 @@ public:
   const std::filesystem::path& path() const { return path_; }
 
 private:
+  void fail(const std::string& message);
+
   State state_ = State::Idle;
   std::filesystem::path path_;
   std::string message_;

@@ -6,9 +6,12 @@
 #include "display.h"
 #include "frame_stats.h"
 #include "image_view.h"
+#include "input_latch.h"
 #include "panels.h"
+#include "widgets.h"
 
 #include "core/image_io.h"
+#include "core/pending_file.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -24,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -65,6 +69,14 @@ void keepGlDriversLoaded() {
 void keepGlDriversLoaded() {}
 #endif
 
+// The monitor's content scale: 2 on a screen set up for twice the usual
+// pixels per inch. Fonts, the panel and the status line grow by it.
+float contentScale(GLFWwindow* window) {
+  float x = 1.0f, y = 1.0f;
+  glfwGetWindowContentScale(window, &x, &y);
+  return std::clamp(std::max(x, y), 1.0f, 4.0f);
+}
+
 // A window of the right size for the image and the panel, within the screen.
 GLFWwindow* createWindow(const Scene& scene, const RenderSettings& s) {
   glfwDefaultWindowHints();
@@ -79,10 +91,18 @@ GLFWwindow* createWindow(const Scene& scene, const RenderSettings& s) {
     height = std::min(height, mode->height);
   }
   const std::string title = "Prism - " + (scene.files.empty() ? std::string() : scene.files[0]);
-  return glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (window) {
+    // Never so narrow that the panel leaves no room for the picture (and Tab
+    // hides the panel altogether).
+    const float scale = contentScale(window);
+    glfwSetWindowSizeLimits(window, int((kPanelWidth + 160.0f) * scale), int(360.0f * scale),
+                            GLFW_DONT_CARE, GLFW_DONT_CARE);
+  }
+  return window;
 }
 
-void styleImGui() {
+void styleImGui(float scale) {
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 0.0f;
@@ -93,6 +113,8 @@ void styleImGui() {
   style.WindowPadding = ImVec2(10.0f, 10.0f);
   style.Colors[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.11f, 0.125f, 1.0f);
   style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.52f, 0.90f, 1.0f); // progress bars
+  style.ScaleAllSizes(scale);
+  ImGui::GetIO().FontGlobalScale = scale;
 }
 
 // The previewer while its window is open. Also the host of a scripted session:
@@ -100,8 +122,11 @@ void styleImGui() {
 class ViewApp : public ScriptHost {
 public:
   ViewApp(GLFWwindow* window, Scene scene, const ViewAppOptions& options)
-      : window_(window), controller_(std::move(scene), options.view, options.warnings) {
-    panel_.savePath = options.view.savePath;
+      : window_(window), controller_(std::move(scene), options.view, options.warnings),
+        dumpWidgets_(options.dumpWidgets) {
+    state_.savePath = options.view.savePath;
+    state_.scenePath = std::filesystem::path(options.view.scenePath).stem().string() + "-view.sc";
+    state_.uiScale = contentScale(window);
     if (options.script) script_.emplace(*options.script);
   }
 
@@ -112,6 +137,7 @@ public:
 
 private:
   void frame();
+  void dumpWidgets();
   void takeScreenshot(int width, int height);
   RenderSettings edited(const ScriptAction& a) const;
   std::size_t lightIndex(const ScriptAction& a) const;
@@ -119,7 +145,8 @@ private:
   GLFWwindow* window_;
   ViewController controller_;
   ImageDisplay display_;
-  PanelState panel_;
+  WindowState state_;
+  std::string dumpWidgets_; // --dump-widgets FILE
   ImageDrag drag_;
   FrameStats frames_;
   std::optional<ScriptRunner> script_;
@@ -134,7 +161,7 @@ private:
 
 int ViewApp::run() {
   Clock::time_point previous = Clock::now();
-  while (!glfwWindowShouldClose(window_) && !quit_ && !panel_.quit) {
+  while (!glfwWindowShouldClose(window_) && !quit_ && !state_.quit) {
     const Clock::time_point begin = Clock::now();
     const bool rendering = controller_.progress().phase != SessionPhase::Done;
     try {
@@ -164,22 +191,29 @@ void ViewApp::frame() {
     const SessionImage& image = controller_.image();
     display_.upload(image.width, image.height, image.radiance, image.supersampled);
   }
+  state_.exposure.update(controller_.progress());
+  state_.estimate.update(controller_.progress());
   if (script_) script_->step(*this); // may edit, save, request a screenshot or quit
 
   int fbWidth = 0, fbHeight = 0;
   glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
+  beginInputFrame(); // this frame's share of the keys and clicks
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  applyInputFrame(); // the replayed buttons and pointer, not the live ones
   ImGui::NewFrame();
+  widgetLog().beginFrame();
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const ImageLayout layout =
-      layoutImage(size.x, size.y, kPanelWidth, display_.width(), display_.height());
-  handleShortcuts(controller_, panel_);
+      layoutImage(size.x, size.y, state_, display_.width(), display_.height());
+  handleShortcuts(controller_, state_);
   navigateWithMouse(controller_, layout, drag_);
-  drawControlPanel(controller_, panel_, frames_, size.x, size.y);
-  if (panel_.markers) drawLightMarkers(controller_, layout);
-  drawStatusLine(controller_, layout);
+  drawControlPanel(controller_, state_, frames_, size.x, size.y - statusHeight(state_));
+  if (state_.markers) drawLightMarkers(controller_, layout);
+  drawStatusLine(controller_, state_, layout);
+  drawHelp(state_, size.x, size.y);
   ImGui::Render();
+  if (!dumpWidgets_.empty()) dumpWidgets();
 
   glViewport(0, 0, fbWidth, fbHeight);
   glClearColor(0.07f, 0.075f, 0.085f, 1.0f);
@@ -190,8 +224,8 @@ void ViewApp::frame() {
   view.zoom = layout.zoom * framebufferScale;
   view.x = int(layout.left * framebufferScale);
   view.y = fbHeight - int((layout.top + float(display_.height()) * layout.zoom) * framebufferScale);
-  view.scale = controller_.exposure();
-  view.overlay = panel_.overlay;
+  view.scale = state_.exposure.scale();
+  view.overlay = state_.overlay;
   display_.draw(view);
   glViewport(0, 0, fbWidth, fbHeight);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -199,6 +233,16 @@ void ViewApp::frame() {
   if (!screenshotPath_.empty()) takeScreenshot(fbWidth, fbHeight);
   glfwSwapBuffers(window_);
   ++frameNumber_;
+}
+
+// The widgets of this frame, for tests that click them (written whole or not
+// at all, so a reader never sees half a list).
+void ViewApp::dumpWidgets() {
+  const std::vector<std::string> duplicates = widgetLog().duplicateIds();
+  if (!duplicates.empty())
+    throw std::runtime_error("two widgets share an ImGui id: " + duplicates.front());
+  const std::string json = widgetLog().json();
+  writeFileAtomically(dumpWidgets_, [&](std::ostream& out) { out << json; });
 }
 
 void ViewApp::takeScreenshot(int width, int height) {
@@ -252,8 +296,8 @@ void ViewApp::start(const ScriptAction& a) {
     break;
   case ScriptOp::Zoom: controller_.setCamera(zoom(camera, a.values[0])); break;
   case ScriptOp::Reset: controller_.resetCamera(); break;
-  case ScriptOp::Overlay: panel_.overlay = a.values[0] != 0.0; break;
-  case ScriptOp::Markers: panel_.markers = a.values[0] != 0.0; break;
+  case ScriptOp::Overlay: state_.overlay = a.values[0] != 0.0; break;
+  case ScriptOp::Markers: state_.markers = a.values[0] != 0.0; break;
   case ScriptOp::Reload: controller_.reload(); break;
   case ScriptOp::Save: controller_.save(a.path); break;
   case ScriptOp::Screenshot:
@@ -319,8 +363,9 @@ std::optional<int> runViewApp(Scene scene, const ViewAppOptions& options, std::s
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr; // no imgui.ini beside the user's files
-  styleImGui();
+  styleImGui(contentScale(window));
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  installInputLatch(window);
   ImGui_ImplOpenGL3_Init("#version 330");
 
   int code = 0;

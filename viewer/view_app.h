@@ -21,6 +21,7 @@ struct ViewAppOptions {
   ViewOptions view;
   std::optional<std::vector<ScriptAction>> script; // a scripted session
   std::vector<std::string> warnings;               // loading the scene reported these
+  std::string dumpWidgets; // write the widgets of every frame to this file (for tests)
 };
 
 // Runs the previewer on `scene` until the window closes or the script quits,

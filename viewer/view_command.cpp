@@ -43,6 +43,9 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
   view->add_option("--script", o.script,
                    "Run a scripted session from FILE (waits, edits, save, screenshot, quit)")
       ->check(CLI::ExistingFile);
+  view->add_option("--dump-widgets", o.dumpWidgets,
+                   "Write every frame's interactive widgets (label, kind, place) as JSON to FILE, "
+                   "for tests that drive the window with real input");
   return view;
 }
 
@@ -75,6 +78,7 @@ int runViewCommand(const ViewCommandOptions& o) {
   int code = kExitOk;
   try {
     if (!o.script.empty()) app.script = loadScript(o.script);
+    app.dumpWidgets = o.dumpWidgets;
     std::vector<Diagnostic> loadWarnings;
     Scene scene = loadAnyScene(o.render.scene, &loadWarnings);
     for (const Diagnostic& d : loadWarnings)

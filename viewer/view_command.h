@@ -14,6 +14,7 @@ namespace prism {
 struct ViewCommandOptions {
   RenderCommandOptions render; // scene, -o (the Save field; the fallback's output), settings
   std::string script;          // a scripted session (see viewer/view_script.h)
+  std::string dumpWidgets;     // --dump-widgets: the window's widgets, every frame (tests)
 };
 
 // Registers the `view` subcommand and its options on `app`.

@@ -1,0 +1,379 @@
+// The previewer driven as a user drives it: real mouse clicks, drags, wheel
+// turns and key taps (xdotool) on a real window, in an X server the test
+// starts itself (Xvfb). `prism view --dump-widgets` lists every widget with
+// its place and value each frame; the test aims at those places and waits for
+// the values to change (each wait is for an event, with a deadline, never a
+// fixed sleep). Scripted sessions (view_e2e_test) bypass ImGui's input
+// handling, which is how a dead Save button and lost key taps went unseen.
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <set>
+#include <thread>
+
+namespace prism::test {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+// Starts `argv` with `env` added; its stdout comes back through `out`.
+pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& env, int* out,
+            int stderrFd = -1) {
+  int pipeFds[2];
+  if (pipe(pipeFds) != 0) return -1;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(pipeFds[1], 1);
+    if (stderrFd >= 0) dup2(stderrFd, 2);
+    close(pipeFds[0]);
+    close(pipeFds[1]);
+    for (const std::string& e : env)
+      putenv(const_cast<char*>(e.c_str()));
+    std::vector<char*> args;
+    for (const std::string& a : argv)
+      args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execvp(args[0], args.data());
+    _exit(127);
+  }
+  close(pipeFds[1]);
+  *out = pipeFds[0];
+  return pid;
+}
+
+// One line from `fd`, or nothing when none comes within `seconds`.
+std::optional<std::string> readLine(int fd, double seconds) {
+  std::string line;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+  for (;;) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    if (left.count() <= 0) return std::nullopt;
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, int(left.count())) <= 0) return std::nullopt;
+    char c;
+    if (read(fd, &c, 1) != 1) return std::nullopt;
+    if (c == '\n') return line;
+    line += c;
+  }
+}
+
+// An X server of the test's own: Xvfb picks a free display and says which
+// on a pipe once it accepts clients (-displayfd), so nothing waits blindly.
+class XServer {
+public:
+  XServer() {
+    pid_ = spawn(
+        {"Xvfb", "-displayfd", "1", "-screen", "0", "1280x800x24", "-noreset", "-nolisten", "tcp"},
+        {}, &out_);
+    if (const std::optional<std::string> number = readLine(out_, 20.0)) display_ = ":" + *number;
+  }
+  ~XServer() {
+    if (pid_ > 0) {
+      kill(pid_, SIGTERM);
+      waitpid(pid_, nullptr, 0);
+    }
+    close(out_);
+  }
+  const std::string& display() const { return display_; }
+
+private:
+  pid_t pid_ = -1;
+  int out_ = -1;
+  std::string display_;
+};
+
+// xdotool on the test's display; false if it failed.
+bool xdotool(const std::string& display, const std::string& args) {
+  return std::system(("DISPLAY=" + display + " xdotool " + args).c_str()) == 0;
+}
+
+// The scene: two lights, a sphere on a floor, small enough to render in a
+// fraction of a second.
+std::string sceneText(int lights) {
+  std::string text = "eye 0 1.5 6\nlookat 0 0.3 0\nfov 40\nresolution 320 240\n";
+  for (int i = 0; i < lights; ++i)
+    text += "light " + std::to_string(3 - 3 * i) + " 4 4  30 28 26\n";
+  return text + "surface 0.9 0.3 0.2 0.8 0.3 0 40 1\nsphere -0.8 0.3 0 0.8\n"
+                "surface 0.4 0.6 0.8 0.9 0.1 0 10 1\n"
+                "polygon 4 -6 -0.5 -6 -6 -0.5 6 6 -0.5 6 6 -0.5 -6\n";
+}
+
+// A previewer in the test's X server, its widgets read from the dump file.
+class Previewer {
+public:
+  Previewer(const XServer& x, const ScratchDir& dir) : display_(x.display()), dir_(dir.path()) {
+    writeFile(dir_ / "a.sc", sceneText(2));
+    writeFile(dir_ / "ready.txt", "wait done\necho ready\n");
+    errFile_ = dir_ / "stderr.txt";
+    const int err = open(errFile_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_ = spawn({PRISM_BINARY, "view", (dir_ / "a.sc").string(), "-o",
+                  (dir_ / "saved.tiff").string(), "--dump-widgets",
+                  (dir_ / "widgets.json").string(), "--script", (dir_ / "ready.txt").string()},
+                 {"DISPLAY=" + display_}, &out_, err);
+    close(err);
+    ready_ = readLine(out_, 60.0) == std::optional<std::string>("ready");
+  }
+  ~Previewer() {
+    if (pid_ > 0 && !exited_) {
+      kill(pid_, SIGTERM);
+      waitpid(pid_, nullptr, 0);
+    }
+    close(out_);
+  }
+
+  bool ready() const { return ready_; }
+  const fs::path& dir() const { return dir_; }
+  std::string stderrText() const { return slurp(errFile_); }
+
+  // The widgets of the latest frame (the file is replaced whole each frame).
+  json widgets() const {
+    const std::string text = slurp(dir_ / "widgets.json");
+    return text.empty() ? json::array() : json::parse(text, nullptr, false);
+  }
+  std::optional<json> widget(const std::string& name) const {
+    for (const json& w : widgets())
+      if (w.value("name", "") == name) return w;
+    return std::nullopt;
+  }
+  bool active(const std::string& name) const {
+    const std::optional<json> w = widget(name);
+    return w && (*w)["active"].get<bool>();
+  }
+  std::string value(const std::string& name) const {
+    const std::optional<json> w = widget(name);
+    return w ? (*w)["value"].get<std::string>() : "(no such widget)";
+  }
+
+  // Waits until `done()` holds, checking each time the window has drawn
+  // (the dump changes); false after `seconds`.
+  bool waitFor(const std::function<bool()>& done, double seconds = 20.0) const {
+    const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < deadline) {
+      if (done()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10)); // a frame is ~16 ms
+    }
+    return done();
+  }
+  bool waitForValue(const std::string& name, const std::string& value) const {
+    return waitFor([&] { return this->value(name) == value; });
+  }
+
+  // Scrolls the panel (the wheel over it) until the widget is wholly in view.
+  bool reveal(const std::string& name) const {
+    for (int turn = 0; turn < 40; ++turn) {
+      const std::optional<json> w = widget(name);
+      if (!w) return false;
+      if ((*w)["visible"].get<bool>()) return true;
+      const int x = int((*w)["x"].get<double>()) + 5;
+      const bool below = (*w)["y"].get<double>() > 200.0;
+      const std::string before = slurp(dir_ / "widgets.json");
+      xdotool(display_, "mousemove " + std::to_string(x) + " 300 click " + (below ? "5" : "4"));
+      waitFor([&] { return slurp(dir_ / "widgets.json") != before; }, 2.0);
+    }
+    return false;
+  }
+
+  // The centre of a widget (or a point a fraction `fx` across it), in the
+  // window, which sits at the screen's origin (Xvfb has no window manager),
+  // scrolled into view first.
+  std::pair<int, int> at(const std::string& name, double fx = 0.5) const {
+    if (!reveal(name)) return {-1, -1};
+    const std::optional<json> w = widget(name);
+    if (!w) return {-1, -1};
+    return {int(std::lround((*w)["x"].get<double>() + fx * (*w)["w"].get<double>())),
+            int(std::lround((*w)["y"].get<double>() + 0.5 * (*w)["h"].get<double>()))};
+  }
+  bool click(const std::string& name, double fx = 0.5) const {
+    const auto [x, y] = at(name, fx);
+    return x >= 0 && xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
+                                           " click 1");
+  }
+  // A key held for 10 ms, as a quick tap is.
+  bool tap(const std::string& keys) const {
+    return xdotool(display_, "keydown " + keys + " sleep 0.01 keyup " + keys);
+  }
+  // Presses at (x, y), moves by (dx, dy) in steps, releases: a drag.
+  bool drag(int x, int y, int dx, int dy, int button = 1) const {
+    std::string steps;
+    for (int i = 1; i <= 5; ++i)
+      steps += " mousemove " + std::to_string(x + dx * i / 5) + " " +
+               std::to_string(y + dy * i / 5) + " sleep 0.03";
+    return xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
+                                 " mousedown " + std::to_string(button) + " sleep 0.05" + steps +
+                                 " mouseup " + std::to_string(button));
+  }
+  // Waits for the program to end by itself.
+  bool exits(double seconds) {
+    const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < deadline) {
+      int status = 0;
+      if (waitpid(pid_, &status, WNOHANG) == pid_) {
+        exited_ = true;
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  }
+
+private:
+  std::string display_;
+  fs::path dir_;
+  fs::path errFile_;
+  pid_t pid_ = -1;
+  int out_ = -1;
+  bool ready_ = false;
+  bool exited_ = false;
+};
+
+class ViewInput : public ::testing::Test {
+protected:
+  void SetUp() override {
+    ASSERT_FALSE(x_.display().empty()) << "Xvfb did not start";
+    ASSERT_TRUE(app_.ready()) << app_.stderrText();
+  }
+  // What the window said and showed last, to tell why a test failed.
+  void TearDown() override {
+    if (HasFailure())
+      std::cerr << "---- the previewer's stderr:\n"
+                << app_.stderrText() << "---- its last widgets:\n"
+                << slurp(app_.dir() / "widgets.json").substr(0, 6000) << "\n";
+  }
+  XServer x_;
+  ScratchDir dir_;
+  Previewer app_{x_, dir_};
+};
+
+// Every button and checkbox, clicked with the mouse, does what it says.
+TEST_F(ViewInput, ButtonsAndCheckboxesWorkByMouse) {
+  // Save: the picture is written (the button once shared its id with the
+  // Save section's header and did nothing).
+  ASSERT_TRUE(app_.click("Save/Save picture (Ctrl+S)"));
+  EXPECT_TRUE(app_.waitFor([&] { return fs::exists(app_.dir() / "saved.tiff"); }));
+  // A path that cannot be written: an error, said in the panel and on stderr.
+  ASSERT_TRUE(app_.click("Save/path"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.active("Save/path"); }));
+  ASSERT_TRUE(xdotool(x_.display(), "key ctrl+a BackSpace type --delay 20 '/no/such/dir/x.tiff'"));
+  ASSERT_TRUE(app_.waitForValue("Save/path", "/no/such/dir/x.tiff"));
+  ASSERT_TRUE(app_.click("Save/Save picture (Ctrl+S)"));
+  EXPECT_TRUE(app_.waitFor([&] {
+    return app_.stderrText().find("no such directory") != std::string::npos;
+  })) << app_.stderrText();
+  for (const char* box : {"Render/jitter sub-samples", "Display/supersampled pixels (O)",
+                          "Display/lights (L)", "Display/lock exposure (E)"}) {
+    const std::string before = app_.value(box);
+    ASSERT_TRUE(before == "true" || before == "false") << box << ": " << before;
+    ASSERT_TRUE(app_.click(box, 0.05));
+    EXPECT_TRUE(app_.waitForValue(box, before == "true" ? "false" : "true")) << box;
+  }
+  // Reload: a third light written into the file appears.
+  writeFile(app_.dir() / "a.sc", sceneText(3));
+  ASSERT_TRUE(app_.click("Scene/Reload (R)"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 3/light 3").has_value(); }));
+  // Reset camera: an edited eye goes back to the file's.
+  const std::string eye = app_.value("Camera/eye");
+  const auto [x, y] = app_.at("Camera/eye", 0.16);
+  ASSERT_TRUE(app_.drag(x, y, 60, 0));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != eye; }));
+  ASSERT_TRUE(app_.click("Camera/Reset camera (Home)"));
+  EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
+}
+
+// Every key tap of 10 ms counts, each exactly once (one in eight did before).
+TEST_F(ViewInput, ShortKeyTapsAllCount) {
+  const std::string overlay = "Display/supersampled pixels (O)";
+  for (int i = 0; i < 8; ++i) {
+    const std::string before = app_.value(overlay);
+    ASSERT_TRUE(app_.tap("o"));
+    ASSERT_TRUE(app_.waitForValue(overlay, before == "true" ? "false" : "true")) << "tap " << i;
+  }
+  ASSERT_TRUE(app_.tap("l"));
+  EXPECT_TRUE(app_.waitForValue("Display/lights (L)", "false"));
+  ASSERT_TRUE(app_.tap("e"));
+  EXPECT_TRUE(app_.waitForValue("Display/lock exposure (E)", "true"));
+  // F1 opens the key help (with its Close button); F1 closes it.
+  ASSERT_TRUE(app_.tap("F1"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Help/Close (F1)").has_value(); }));
+  ASSERT_TRUE(app_.tap("F1"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Help/Close (F1)").has_value(); }));
+  // Tab hides the panel and shows it again.
+  ASSERT_TRUE(app_.tap("Tab"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Scene/Reload (R)").has_value(); }));
+  ASSERT_TRUE(app_.tap("Tab"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Scene/Reload (R)").has_value(); }));
+  // R and F5 reload.
+  writeFile(app_.dir() / "a.sc", sceneText(1));
+  ASSERT_TRUE(app_.tap("r"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Lights/light 2/light 2").has_value(); }));
+  writeFile(app_.dir() / "a.sc", sceneText(2));
+  ASSERT_TRUE(app_.tap("F5"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 2/light 2").has_value(); }));
+  // Ctrl+S saves, Ctrl+Q quits, both as quick taps.
+  ASSERT_TRUE(app_.tap("ctrl+s"));
+  EXPECT_TRUE(app_.waitFor([&] { return fs::exists(app_.dir() / "saved.tiff"); }));
+  ASSERT_TRUE(app_.tap("ctrl+q"));
+  EXPECT_TRUE(app_.exits(20.0));
+}
+
+// Sliders and number fields by dragging; the camera by dragging on the
+// picture, the wheel, and Home.
+TEST_F(ViewInput, DragsSlidersAndThePicture) {
+  // A click on the slider's track sets the value there.
+  ASSERT_TRUE(app_.click("Render/max depth", 0.95));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.value("Render/max depth") != "5"; }));
+  const std::string light = app_.value("Lights/light 1/light 1");
+  const auto [lx, ly] = app_.at("Lights/light 1/light 1", 0.16);
+  ASSERT_TRUE(app_.drag(lx, ly, 80, 0));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.value("Lights/light 1/light 1") != light; }));
+  // Orbit: a drag on the picture moves the eye, not lookat.
+  const std::string eye = app_.value("Camera/eye"), lookat = app_.value("Camera/lookat");
+  ASSERT_TRUE(app_.drag(160, 120, 60, 20));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != eye; }));
+  EXPECT_EQ(app_.value("Camera/lookat"), lookat);
+  // Pan: a right drag moves both.
+  const std::string orbited = app_.value("Camera/eye");
+  ASSERT_TRUE(app_.drag(160, 120, 30, 30, 3));
+  EXPECT_TRUE(app_.waitFor([&] {
+    return app_.value("Camera/eye") != orbited && app_.value("Camera/lookat") != lookat;
+  }));
+  // Wheel: the eye moves toward lookat.
+  const std::string panned = app_.value("Camera/eye");
+  ASSERT_TRUE(xdotool(x_.display(), "mousemove 160 120 click 4"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != panned; }));
+  // Home: back to the file's camera.
+  ASSERT_TRUE(app_.tap("Home"));
+  EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
+  EXPECT_TRUE(app_.waitForValue("Camera/lookat", lookat));
+}
+
+// No two widgets share an ImGui id (the dump refuses to be written then), and
+// every widget has a place inside the window.
+TEST_F(ViewInput, EveryWidgetHasAPlaceAndAUniqueName) {
+  const json widgets = app_.widgets();
+  ASSERT_GT(widgets.size(), 15u);
+  std::set<std::string> names;
+  for (const json& w : widgets) {
+    EXPECT_TRUE(names.insert(w["name"].get<std::string>()).second) << w["name"];
+    EXPECT_GE(w["x"].get<double>(), 0.0);
+    EXPECT_GT(w["w"].get<double>(), 0.0);
+    EXPECT_GT(w["h"].get<double>(), 0.0);
+  }
+}
+
+} // namespace
+} // namespace prism::test

@@ -13,6 +13,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -373,6 +374,40 @@ TEST_F(ViewInput, EveryWidgetHasAPlaceAndAUniqueName) {
     EXPECT_GT(w["w"].get<double>(), 0.0);
     EXPECT_GT(w["h"].get<double>(), 0.0);
   }
+}
+
+// The window opens before the scene is read: here the scene file is a pipe
+// that the test fills only once the window is there and stderr has said
+// what the previewer is waiting for (forest.sc, 10^6 primitives, left its
+// user without a window or a word for seconds).
+TEST(ViewLoading, TheWindowOpensAtOnceAndSaysWhatItIsReading) {
+  XServer x;
+  ASSERT_FALSE(x.display().empty());
+  ScratchDir dir;
+  const fs::path scene = dir / "slow.sc";
+  ASSERT_EQ(mkfifo(scene.c_str(), 0644), 0);
+  writeFile(dir / "ready.txt", "wait done\necho ready\nquit\n");
+  const fs::path errors = dir / "stderr.txt";
+  const int err = open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  int out = -1;
+  const pid_t pid =
+      spawn({PRISM_BINARY, "view", scene.string(), "--script", (dir / "ready.txt").string()},
+            {"DISPLAY=" + x.display()}, &out, err);
+  close(err);
+  // The window exists while the scene cannot have been read.
+  EXPECT_TRUE(xdotool(x.display(), "search --sync --name 'Prism - .*slow.sc'"));
+  const auto deadline = Clock::now() + std::chrono::seconds(30);
+  while (slurp(errors).find("prism: reading") == std::string::npos && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_NE(slurp(errors).find("prism: reading " + scene.string() + "..."), std::string::npos)
+      << slurp(errors);
+  writeFile(scene, sceneText(1)); // opens the pipe: the reading ends
+  EXPECT_EQ(readLine(out, 60.0), std::optional<std::string>("ready")) << slurp(errors);
+  int status = 0;
+  EXPECT_EQ(waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_NE(slurp(errors).find("prism: ready in "), std::string::npos) << slurp(errors);
+  close(out);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "frame_stats.h"
 #include "image_view.h"
 #include "input_latch.h"
+#include "number_text.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -26,8 +27,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <memory>
 
@@ -77,21 +80,31 @@ float contentScale(GLFWwindow* window) {
   return std::clamp(std::max(x, y), 1.0f, 4.0f);
 }
 
-// A window of the right size for the image and the panel, within the screen.
-GLFWwindow* createWindow(const Scene& scene, const RenderSettings& s) {
+// The window's size for an image of `width` x `height` and the panel, within
+// the screen.
+void fitWindow(GLFWwindow* window, int width, int height) {
+  const float scale = contentScale(window);
+  int w = width + int(kPanelWidth * scale);
+  int h = std::max(height + int(kStatusHeight * scale), int(760.0f * scale));
+  if (const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor())) {
+    w = std::min(w, mode->width);
+    h = std::min(h, mode->height);
+  }
+  glfwSetWindowSize(window, w, h);
+}
+
+// A window for the scene, opened before it is read (its size is set again
+// once the image size is known).
+GLFWwindow* createWindow(const ViewAppOptions& options) {
   glfwDefaultWindowHints();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  int width = s.width + int(kPanelWidth);
-  int height = std::max(s.height + int(kStatusHeight), 760);
-  if (const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor())) {
-    width = std::min(width, mode->width);
-    height = std::min(height, mode->height);
-  }
-  const std::string title = "Prism - " + (scene.files.empty() ? std::string() : scene.files[0]);
-  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  const std::string title = "Prism - " + options.scenePath;
+  GLFWwindow* window = glfwCreateWindow(int(kPanelWidth) + std::max(options.width, 512),
+                                        std::max(options.height, 736) + int(kStatusHeight),
+                                        title.c_str(), nullptr, nullptr);
   if (window) {
     // Never so narrow that the panel leaves no room for the picture (and Tab
     // hides the panel altogether).
@@ -117,15 +130,84 @@ void styleImGui(float scale) {
   ImGui::GetIO().FontGlobalScale = scale;
 }
 
+// What the loading screen and stderr say about a stage that has lasted a while.
+std::string loadingText(const ViewAppOptions& options, const LoadProgress& progress) {
+  if (progress.stage.load() == 0) return "reading " + options.scenePath;
+  return "building the hierarchy of " + withSeparators((long long)progress.primitives.load()) +
+         " primitives";
+}
+
+// Shows, until the scene is read and its hierarchy built, what is being done
+// and for how long, also on stderr once a stage has taken a second (a scene of
+// a million primitives takes several). Closing the window meanwhile ends the
+// program once the reading, which cannot be interrupted, is over.
+PreparedView showLoading(GLFWwindow* window, const ViewAppOptions& options) {
+  LoadProgress progress;
+  std::future<PreparedView> loading =
+      std::async(std::launch::async, options.prepare, std::ref(progress));
+  const Clock::time_point start = Clock::now();
+  Clock::time_point stageBegan = start;
+  int stage = 0, announced = -1;
+  while (loading.wait_for(std::chrono::milliseconds(0)) != std::future_status::ready) {
+    if (progress.stage.load() != stage) {
+      stage = progress.stage.load();
+      stageBegan = Clock::now();
+    }
+    const double stageSeconds = seconds(Clock::now() - stageBegan);
+    if (stageSeconds >= 1.0 && announced != stage) {
+      std::cerr << "prism: " << loadingText(options, progress) << "...\n";
+      announced = stage;
+    }
+    beginInputFrame();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    applyInputFrame();
+    ImGui::NewFrame();
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * size.x, 0.5f * size.y), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Loading", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove);
+    ImGui::Text("Prism: %s", loadingText(options, progress).c_str());
+    char elapsed[64];
+    std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds(Clock::now() - start));
+    // Nothing tells how much of a stage is done: the bar sweeps to show life.
+    const float sweep = float(std::fmod(seconds(Clock::now() - start), 2.0) / 2.0);
+    ImGui::ProgressBar(sweep, ImVec2(360.0f * contentScale(window), 0.0f), elapsed);
+    ImGui::End();
+    ImGui::Render();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    glViewport(0, 0, w, h);
+    glClearColor(0.07f, 0.075f, 0.085f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(window);
+    glfwWaitEventsTimeout(1.0 / 30.0);
+    if (glfwWindowShouldClose(window)) {
+      glfwHideWindow(window);
+      loading.wait();
+      return {nullptr, 0};
+    }
+  }
+  if (announced >= 0) {
+    char ready[64];
+    std::snprintf(ready, sizeof ready, "prism: ready in %.1f s\n", seconds(Clock::now() - start));
+    std::cerr << ready;
+  }
+  return loading.get();
+}
+
 // The previewer while its window is open. Also the host of a scripted session:
 // a script's actions go through the same controller calls as the panel's.
 class ViewApp : public ScriptHost {
 public:
-  ViewApp(GLFWwindow* window, Scene scene, const ViewAppOptions& options)
-      : window_(window), controller_(std::move(scene), options.view, options.warnings),
-        dumpWidgets_(options.dumpWidgets) {
-    state_.savePath = options.view.savePath;
-    state_.scenePath = std::filesystem::path(options.view.scenePath).stem().string() + "-view.sc";
+  ViewApp(GLFWwindow* window, std::unique_ptr<ViewController> controller,
+          const ViewAppOptions& options)
+      : window_(window), controller_(std::move(controller)), dumpWidgets_(options.dumpWidgets) {
+    state_.savePath = options.savePath;
+    state_.scenePath = std::filesystem::path(options.scenePath).stem().string() + "-view.sc";
     state_.uiScale = contentScale(window);
     if (options.script) script_.emplace(*options.script);
   }
@@ -143,7 +225,7 @@ private:
   std::size_t lightIndex(const ScriptAction& a) const;
 
   GLFWwindow* window_;
-  ViewController controller_;
+  std::unique_ptr<ViewController> controller_;
   ImageDisplay display_;
   WindowState state_;
   std::string dumpWidgets_; // --dump-widgets FILE
@@ -163,7 +245,7 @@ int ViewApp::run() {
   Clock::time_point previous = Clock::now();
   while (!glfwWindowShouldClose(window_) && !quit_ && !state_.quit) {
     const Clock::time_point begin = Clock::now();
-    const bool rendering = controller_.progress().phase != SessionPhase::Done;
+    const bool rendering = controller_->progress().phase != SessionPhase::Done;
     try {
       frame();
     } catch (const std::runtime_error& error) {
@@ -187,12 +269,12 @@ int ViewApp::run() {
 }
 
 void ViewApp::frame() {
-  if (controller_.update()) {
-    const SessionImage& image = controller_.image();
+  if (controller_->update()) {
+    const SessionImage& image = controller_->image();
     display_.upload(image.width, image.height, image.radiance, image.supersampled);
   }
-  state_.exposure.update(controller_.progress());
-  state_.estimate.update(controller_.progress());
+  state_.exposure.update(controller_->progress());
+  state_.estimate.update(controller_->progress());
   if (script_) script_->step(*this); // may edit, save, request a screenshot or quit
 
   int fbWidth = 0, fbHeight = 0;
@@ -206,11 +288,11 @@ void ViewApp::frame() {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const ImageLayout layout =
       layoutImage(size.x, size.y, state_, display_.width(), display_.height());
-  handleShortcuts(controller_, state_);
-  navigateWithMouse(controller_, layout, drag_);
-  drawControlPanel(controller_, state_, frames_, size.x, size.y - statusHeight(state_));
-  if (state_.markers) drawLightMarkers(controller_, layout);
-  drawStatusLine(controller_, state_, layout);
+  handleShortcuts(*controller_, state_);
+  navigateWithMouse(*controller_, layout, drag_);
+  drawControlPanel(*controller_, state_, frames_, size.x, size.y - statusHeight(state_));
+  if (state_.markers) drawLightMarkers(*controller_, layout);
+  drawStatusLine(*controller_, state_, layout);
   drawHelp(state_, size.x, size.y);
   ImGui::Render();
   if (!dumpWidgets_.empty()) dumpWidgets();
@@ -254,7 +336,7 @@ void ViewApp::takeScreenshot(int width, int height) {
 }
 
 RenderSettings ViewApp::edited(const ScriptAction& a) const {
-  RenderSettings s = controller_.settings();
+  RenderSettings s = controller_->settings();
   if (a.op == ScriptOp::Depth) s.maxDepth = a.index;
   if (a.op == ScriptOp::Thresh) s.thresh = a.values[0];
   if (a.op == ScriptOp::Jitter) s.jitter = a.values[0] != 0.0;
@@ -262,7 +344,7 @@ RenderSettings ViewApp::edited(const ScriptAction& a) const {
 }
 
 std::size_t ViewApp::lightIndex(const ScriptAction& a) const {
-  const std::size_t count = controller_.scene().lights.size();
+  const std::size_t count = controller_->scene().lights.size();
   if (a.index < 1 || std::size_t(a.index) > count)
     throw std::runtime_error("there is no light " + std::to_string(a.index) + " (the scene has " +
                              std::to_string(count) + ")");
@@ -273,33 +355,33 @@ void ViewApp::start(const ScriptAction& a) {
   const auto vec = [&](std::size_t first) {
     return Vec3(a.values[first], a.values[first + 1], a.values[first + 2]);
   };
-  const CameraSpec& camera = controller_.scene().camera;
+  const CameraSpec& camera = controller_->scene().camera;
   switch (a.op) {
   case ScriptOp::Wait:
   case ScriptOp::Timeout: break;
   case ScriptOp::Frames: framesAtStart_ = frameNumber_; break;
   case ScriptOp::Depth:
   case ScriptOp::Thresh:
-  case ScriptOp::Jitter: controller_.setSettings(edited(a)); break;
-  case ScriptOp::Ambient: controller_.setAmbient(vec(0)); break;
+  case ScriptOp::Jitter: controller_->setSettings(edited(a)); break;
+  case ScriptOp::Ambient: controller_->setAmbient(vec(0)); break;
   case ScriptOp::Light:
   case ScriptOp::Intensity: {
     const std::size_t i = lightIndex(a);
-    Light light = controller_.scene().lights[i];
+    Light light = controller_->scene().lights[i];
     (a.op == ScriptOp::Light ? light.position : light.intensity) = vec(0);
-    controller_.setLight(i, light);
+    controller_->setLight(i, light);
     break;
   }
-  case ScriptOp::Orbit: controller_.setCamera(orbit(camera, a.values[0], a.values[1])); break;
+  case ScriptOp::Orbit: controller_->setCamera(orbit(camera, a.values[0], a.values[1])); break;
   case ScriptOp::Pan:
-    controller_.setCamera(pan(camera, a.values[0], a.values[1], controller_.settings().height));
+    controller_->setCamera(pan(camera, a.values[0], a.values[1], controller_->settings().height));
     break;
-  case ScriptOp::Zoom: controller_.setCamera(zoom(camera, a.values[0])); break;
-  case ScriptOp::Reset: controller_.resetCamera(); break;
+  case ScriptOp::Zoom: controller_->setCamera(zoom(camera, a.values[0])); break;
+  case ScriptOp::Reset: controller_->resetCamera(); break;
   case ScriptOp::Overlay: state_.overlay = a.values[0] != 0.0; break;
   case ScriptOp::Markers: state_.markers = a.values[0] != 0.0; break;
-  case ScriptOp::Reload: controller_.reload(); break;
-  case ScriptOp::Save: controller_.save(a.path); break;
+  case ScriptOp::Reload: controller_->reload(); break;
+  case ScriptOp::Save: controller_->save(a.path); break;
   case ScriptOp::Screenshot:
     screenshotPath_ = a.path;
     screenshotTaken_ = false;
@@ -311,8 +393,8 @@ void ViewApp::start(const ScriptAction& a) {
 
 bool ViewApp::finished(const ScriptAction& a) {
   // Between an edit and the next update() the snapshot still shows the old render.
-  const bool current = controller_.snapshotCurrent();
-  const SessionProgress& p = controller_.progress();
+  const bool current = controller_->snapshotCurrent();
+  const SessionProgress& p = controller_->progress();
   switch (a.op) {
   case ScriptOp::Wait:
     switch (a.waitFor) {
@@ -320,20 +402,20 @@ bool ViewApp::finished(const ScriptAction& a) {
     case WaitFor::Pass1: return current && p.phase != SessionPhase::Coarse;
     case WaitFor::Done: return current && p.phase == SessionPhase::Done;
     case WaitFor::Reload:
-      if (controller_.successfulReloads() <= reloadsSeen_) return false;
-      reloadsSeen_ = controller_.successfulReloads();
+      if (controller_->successfulReloads() <= reloadsSeen_) return false;
+      reloadsSeen_ = controller_->successfulReloads();
       return true;
     case WaitFor::Error:
-      if (controller_.failedReloads() <= errorsSeen_) return false;
-      errorsSeen_ = controller_.failedReloads();
+      if (controller_->failedReloads() <= errorsSeen_) return false;
+      errorsSeen_ = controller_->failedReloads();
       return true;
     }
     return false;
   case ScriptOp::Frames: return frameNumber_ - framesAtStart_ >= std::uint64_t(a.index);
   case ScriptOp::Save:
-    if (controller_.saveJob().state() == SaveJob::State::Failed)
-      throw std::runtime_error(controller_.saveJob().message());
-    return controller_.saveJob().state() == SaveJob::State::Saved;
+    if (controller_->saveJob().state() == SaveJob::State::Failed)
+      throw std::runtime_error(controller_->saveJob().message());
+    return controller_->saveJob().state() == SaveJob::State::Saved;
   case ScriptOp::Screenshot: return screenshotTaken_;
   default: return true;
   }
@@ -350,8 +432,8 @@ bool openWindowSystem(std::string& why) {
 
 void closeWindowSystem() { glfwTerminate(); }
 
-std::optional<int> runViewApp(Scene scene, const ViewAppOptions& options, std::string& why) {
-  GLFWwindow* window = createWindow(scene, options.view.settings);
+std::optional<int> runViewApp(const ViewAppOptions& options, std::string& why) {
+  GLFWwindow* window = createWindow(options);
   if (!window) {
     why = "cannot create an OpenGL 3.3 window: " + lastGlfwError;
     return std::nullopt;
@@ -370,8 +452,16 @@ std::optional<int> runViewApp(Scene scene, const ViewAppOptions& options, std::s
 
   int code = 0;
   try {
-    ViewApp app(window, std::move(scene), options); // joins its render threads on exit
-    code = app.run();
+    // The window is open at once; the scene is read on a thread of its own.
+    PreparedView prepared = showLoading(window, options);
+    if (prepared.controller) {
+      const RenderSettings s = prepared.controller->settings();
+      fitWindow(window, s.width, s.height);
+      ViewApp app(window, std::move(prepared.controller), options); // joins its threads on exit
+      code = app.run();
+    } else {
+      code = prepared.exitCode;
+    }
   } catch (const std::exception& error) { // the display shader, a screenshot's file
     std::cerr << "prism: error: " << error.what() << "\n";
     code = 1;

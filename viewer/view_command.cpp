@@ -26,6 +26,54 @@ int renderHeadless(const ViewCommandOptions& o, const std::string& why) {
   return runRenderCommand(render);
 }
 
+#ifdef PRISM_HAVE_PREVIEWER
+// Reads the scene and makes the previewer's controller (which builds the
+// hierarchy), on the window's loader thread. Failures are reported on stderr
+// as `prism render` reports them, with the same exit codes.
+PreparedView prepareView(const ViewCommandOptions& o, LoadProgress& progress) {
+  try {
+    std::vector<Diagnostic> loadWarnings;
+    Scene scene = loadAnyScene(o.render.scene, &loadWarnings);
+    std::vector<std::string> warnings;
+    for (const Diagnostic& d : loadWarnings)
+      warnings.push_back(formatWarning(d)); // printed by the controller
+    ViewOptions v;
+    CameraSpec camera = scene.camera;
+    if (const std::optional<std::string> problem = applyCameraOptions(o.render, camera)) {
+      std::cerr << "prism: error: " << *problem << "\n";
+      return {nullptr, kExitUsage};
+    }
+    if (hasCameraOptions(o.render)) v.camera = camera; // an edit over the file's camera
+    v.scenePath = o.render.scene;
+    v.sizeFromScene = o.render.size.empty();
+    v.settings.width = v.sizeFromScene ? scene.width : o.render.size[0];
+    v.settings.height = v.sizeFromScene ? scene.height : o.render.size[1];
+    v.settings.maxDepth = o.render.depth.value_or(5);
+    v.settings.thresh = o.render.thresh;
+    v.settings.jitter = o.render.jitter;
+    v.settings.threads = resolveThreadCount(o.render.threads);
+    v.accel = o.render.accel;
+    const std::string what = "a " + std::to_string(v.settings.width) + " x " +
+                             std::to_string(v.settings.height) + " preview";
+    if (const std::optional<std::string> problem = memoryProblem(
+            imageBytes(v.settings.width, v.settings.height, kPreviewBytesPerPixel), what)) {
+      std::cerr << "prism: error: " << *problem << "\n";
+      return {nullptr, kExitFailure};
+    }
+    progress.primitives = scene.primitiveCount();
+    progress.stage = 1;
+    return {std::make_unique<ViewController>(std::move(scene), v, std::move(warnings)), kExitOk};
+  } catch (const SceneError& error) {
+    for (const Diagnostic& d : error.diagnostics())
+      std::cerr << d.format() << "\n";
+    return {nullptr, kExitUsage};
+  } catch (const std::bad_alloc&) {
+    std::cerr << "prism: error: out of memory\n";
+    return {nullptr, kExitFailure};
+  }
+}
+#endif
+
 } // namespace
 
 CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
@@ -75,52 +123,27 @@ int runViewCommand(const ViewCommandOptions& o) {
   if (!openWindowSystem(why)) return renderHeadless(o, "cannot open a window (" + why + ")");
 
   ViewAppOptions app;
-  int code = kExitOk;
   try {
     if (!o.script.empty()) app.script = loadScript(o.script);
-    app.dumpWidgets = o.dumpWidgets;
-    std::vector<Diagnostic> loadWarnings;
-    Scene scene = loadAnyScene(o.render.scene, &loadWarnings);
-    for (const Diagnostic& d : loadWarnings)
-      app.warnings.push_back(formatWarning(d)); // printed by the window, or by the fallback
-    ViewOptions& v = app.view;
-    CameraSpec camera = scene.camera;
-    if (const std::optional<std::string> problem = applyCameraOptions(o.render, camera)) {
-      std::cerr << "prism: error: " << *problem << "\n";
-      closeWindowSystem();
-      return kExitUsage;
-    }
-    if (hasCameraOptions(o.render)) v.camera = camera; // an edit over the file's camera
-    v.scenePath = o.render.scene;
-    v.sizeFromScene = o.render.size.empty();
-    v.settings.width = v.sizeFromScene ? scene.width : o.render.size[0];
-    v.settings.height = v.sizeFromScene ? scene.height : o.render.size[1];
-    v.settings.maxDepth = o.render.depth.value_or(5);
-    v.settings.thresh = o.render.thresh;
-    v.settings.jitter = o.render.jitter;
-    v.settings.threads = resolveThreadCount(o.render.threads);
-    v.accel = o.render.accel;
-    v.savePath = o.render.output.empty()
-                     ? std::filesystem::path(o.render.scene).stem().string() + ".tiff"
-                     : o.render.output;
-    const std::string what = "a " + std::to_string(v.settings.width) + " x " +
-                             std::to_string(v.settings.height) + " preview";
-    if (const std::optional<std::string> problem = memoryProblem(
-            imageBytes(v.settings.width, v.settings.height, kPreviewBytesPerPixel), what)) {
-      std::cerr << "prism: error: " << *problem << "\n";
-      closeWindowSystem();
-      return kExitFailure;
-    }
-    const std::optional<int> ran = runViewApp(std::move(scene), app, why);
-    closeWindowSystem();
-    return ran ? *ran : renderHeadless(o, why);
-  } catch (const SceneError& error) { // the scene or the script
+  } catch (const SceneError& error) { // the script
     for (const Diagnostic& d : error.diagnostics())
       std::cerr << d.format() << "\n";
-    code = kExitUsage;
+    closeWindowSystem();
+    return kExitUsage;
   }
+  app.scenePath = o.render.scene;
+  app.dumpWidgets = o.dumpWidgets;
+  if (!o.render.size.empty()) {
+    app.width = o.render.size[0];
+    app.height = o.render.size[1];
+  }
+  app.savePath = o.render.output.empty()
+                     ? std::filesystem::path(o.render.scene).stem().string() + ".tiff"
+                     : o.render.output;
+  app.prepare = [&o](LoadProgress& progress) { return prepareView(o, progress); };
+  const std::optional<int> ran = runViewApp(app, why);
   closeWindowSystem();
-  return code;
+  return ran ? *ran : renderHeadless(o, why);
 #endif
 }
 

@@ -22,8 +22,8 @@ std::string lowerExtension(const fs::path& path) {
   return ext;
 }
 
-void writeAtomically(const fs::path& path, int width, int height, TypeDesc type,
-                     const void* pixels) {
+void writeAtomically(const fs::path& path, int width, int height, TypeDesc type, const void* pixels,
+                     const std::string& description) {
   PendingFile file(path);
   auto fail = [&](const std::string& why) {
     throw std::runtime_error("cannot write '" + path.string() + "': " + why);
@@ -33,6 +33,7 @@ void writeAtomically(const fs::path& path, int width, int height, TypeDesc type,
   OIIO::ImageSpec spec(width, height, 3, type);
   spec.attribute("compression", "zip");
   spec.attribute("Software", "Prism");
+  if (!description.empty()) spec.attribute("ImageDescription", description);
   if (!out->open(file.tempPath().string(), spec)) fail(out->geterror());
   if (!out->write_image(type, pixels)) {
     const std::string why = out->geterror();
@@ -72,14 +73,14 @@ bool isFloatFormat(const fs::path& path) {
   return ext == ".exr" || ext == ".hdr";
 }
 
-void writeImage8(const fs::path& path, int width, int height,
-                 const std::vector<std::uint8_t>& rgb) {
-  writeAtomically(path, width, height, TypeDesc::UINT8, rgb.data());
+void writeImage8(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgb,
+                 const std::string& description) {
+  writeAtomically(path, width, height, TypeDesc::UINT8, rgb.data(), description);
 }
 
-void writeImageFloat(const fs::path& path, int width, int height,
-                     const std::vector<Rgb>& radiance) {
-  writeAtomically(path, width, height, TypeDesc::FLOAT, radiance.data());
+void writeImageFloat(const fs::path& path, int width, int height, const std::vector<Rgb>& radiance,
+                     const std::string& description) {
+  writeAtomically(path, width, height, TypeDesc::FLOAT, radiance.data(), description);
 }
 
 } // namespace prism

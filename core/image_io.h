@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace prism {
@@ -23,12 +24,14 @@ void checkWritableFile(const std::filesystem::path& path);
 // checkWritableFile, and an image format for the extension.
 void checkWritable(const std::filesystem::path& path);
 
-// Interleaved 8-bit RGB (row 0 at the top). Throws std::runtime_error on failure.
+// Interleaved 8-bit RGB (row 0 at the top). `description`, when given, is
+// stored as the file's ImageDescription (how the picture was exposed). Throws
+// std::runtime_error on failure.
 void writeImage8(const std::filesystem::path& path, int width, int height,
-                 const std::vector<std::uint8_t>& rgb);
+                 const std::vector<std::uint8_t>& rgb, const std::string& description = "");
 
 // Float RGB radiance (for OpenEXR, or a float TIFF). Throws std::runtime_error.
 void writeImageFloat(const std::filesystem::path& path, int width, int height,
-                     const std::vector<Rgb>& radiance);
+                     const std::vector<Rgb>& radiance, const std::string& description = "");
 
 } // namespace prism

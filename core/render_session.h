@@ -121,6 +121,9 @@ public:
   Scene sceneCopy() const;
   const std::vector<Light>& lights() const { return scene_->lights; } // UI thread only
   const Scene& scene() const { return *scene_; }                      // UI thread only
+  // The hierarchy the workers trace with (read-only, so any thread may trace
+  // with it too; replaced only by setScene, on the UI thread).
+  const Accel& accel() const { return *accel_; }
 
   // Bumps whenever workers publish new samples or the session restarts.
   std::uint64_t version() const { return version_.load(std::memory_order_acquire); }

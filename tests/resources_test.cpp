@@ -18,6 +18,7 @@
 #include <atomic>
 #include <csignal>
 #include <stdexcept>
+#include <thread>
 
 namespace prism {
 namespace {
@@ -102,14 +103,28 @@ TEST(PendingFile, ASignalRemovesPendingTemporaries) {
 // process through std::terminate; it now stops the other workers and is
 // rethrown to the caller once every thread has finished.
 TEST(ParallelFor, AWorkersExceptionReachesTheCaller) {
-  std::atomic<int> started{0};
+  // Thrown on a thread of the pool (worker 1), while the calling thread
+  // (worker 0) waits inside an item for it: rethrown to the caller.
+  std::atomic<bool> thrown{false};
   EXPECT_THROW(parallelFor(10000, 2,
-                           [&](int item, int) {
-                             ++started;
-                             if (item == 3) throw std::bad_alloc();
+                           [&](int, int worker) {
+                             if (worker == 1) {
+                               thrown = true;
+                               throw std::bad_alloc();
+                             }
+                             while (!thrown)
+                               std::this_thread::yield();
                            }),
                std::bad_alloc);
-  EXPECT_LT(started.load(), 10000); // the rest were not started
+  // On one thread, nothing after the failing item runs.
+  std::atomic<int> started{0};
+  EXPECT_THROW(parallelFor(10000, 1,
+                           [&](int item, int) {
+                             ++started;
+                             if (item == 3) throw std::runtime_error("item 3");
+                           }),
+               std::runtime_error);
+  EXPECT_EQ(started.load(), 4);
   // Without exceptions every item runs once.
   std::atomic<int> ran{0};
   parallelFor(1000, 2, [&](int, int) { ++ran; });

@@ -7,6 +7,7 @@
 // handling, which is how a dead Save button and lost key taps went unseen.
 #include "test_files.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -101,6 +102,13 @@ private:
 // xdotool on the test's display; false if it failed.
 bool xdotool(const std::string& display, const std::string& args) {
   return std::system(("DISPLAY=" + display + " xdotool " + args).c_str()) == 0;
+}
+
+// The ImageDescription a picture file holds.
+std::string imageDescription(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return "";
+  return in->spec().get_string_attribute("ImageDescription");
 }
 
 // The scene: two lights, a sphere on a floor, small enough to render in a
@@ -360,6 +368,84 @@ TEST_F(ViewInput, DragsSlidersAndThePicture) {
   ASSERT_TRUE(app_.tap("Home"));
   EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
   EXPECT_TRUE(app_.waitForValue("Camera/lookat", lookat));
+}
+
+// Undo and redo by key and by button; a drag is one step; resets and the
+// file's values.
+TEST_F(ViewInput, UndoRedoAndResets) {
+  const std::string light = app_.value("Lights/light 1/light 1");
+  const auto [lx, ly] = app_.at("Lights/light 1/light 1", 0.16);
+  ASSERT_TRUE(app_.drag(lx, ly, 80, 0));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Lights/light 1/light 1") != light; }));
+  const std::string moved = app_.value("Lights/light 1/light 1");
+  ASSERT_TRUE(app_.tap("ctrl+z")); // the whole drag, in one step
+  EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", light));
+  ASSERT_TRUE(app_.tap("ctrl+shift+z"));
+  EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", moved));
+  ASSERT_TRUE(app_.click("Scene/Undo (Ctrl+Z)"));
+  EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", light));
+  ASSERT_TRUE(app_.click("Scene/Redo"));
+  EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", moved));
+  ASSERT_TRUE(app_.click("Lights/light 1/reset"));
+  EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", light));
+  // The file's values: every edit of the scene goes (and can come back).
+  const std::string eye = app_.value("Camera/eye");
+  ASSERT_TRUE(app_.drag(160, 120, 60, 20));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != eye; }));
+  ASSERT_TRUE(app_.click("Scene/Back to the file's values"));
+  EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
+}
+
+// The picture's zoom (the camera stays): Ctrl + wheel, the slider, 1:1, fit.
+TEST_F(ViewInput, ZoomThePictureNotTheCamera) {
+  const std::string eye = app_.value("Camera/eye");
+  const std::string fit = app_.value("View/zoom %");
+  ASSERT_TRUE(xdotool(x_.display(), "mousemove 160 368 keydown ctrl click 4 click 4 keyup ctrl"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.value("View/zoom %") != fit; }));
+  EXPECT_EQ(app_.value("Camera/eye"), eye);
+  ASSERT_TRUE(app_.tap("1"));
+  EXPECT_TRUE(app_.waitForValue("View/zoom %", "100"));
+  ASSERT_TRUE(app_.click("View/zoom %", 0.9));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.value("View/zoom %") != "100"; }));
+  ASSERT_TRUE(app_.click("View/Fit (F)"));
+  EXPECT_TRUE(app_.waitForValue("View/zoom %", fit));
+}
+
+// A click on the picture shows that pixel's ray tree; Esc closes it. Pinning
+// a render offers the comparison; B flips to it.
+TEST_F(ViewInput, InspectAPixelAndCompareWithAPinnedRender) {
+  ASSERT_FALSE(app_.widget("Pixel/Close").has_value());
+  ASSERT_TRUE(xdotool(x_.display(), "mousemove 100 380 click 1")); // on the sphere
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Pixel/Close").has_value(); }));
+  ASSERT_TRUE(app_.tap("Escape"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Pixel/Close").has_value(); }));
+  ASSERT_FALSE(app_.widget("View/flip (B)").has_value());
+  ASSERT_TRUE(app_.click("View/Pin this render (P)"));
+  EXPECT_TRUE(app_.waitForValue("View/flip (B)", "true"));
+  ASSERT_TRUE(app_.tap("b"));
+  EXPECT_TRUE(app_.waitForValue("View/show the pinned render (B)", "true"));
+  ASSERT_TRUE(app_.click("View/split"));
+  EXPECT_TRUE(app_.waitForValue("View/split", "true"));
+  EXPECT_TRUE(app_.widget("View/split at").has_value());
+}
+
+// Save with the window's exposure says so in the file; by default the file
+// is what `prism render` writes, with SPEC's automatic exposure.
+TEST_F(ViewInput, SaveSaysHowThePictureWasExposed) {
+  ASSERT_TRUE(app_.click("Display/lock exposure (E)", 0.05));
+  ASSERT_TRUE(app_.waitForValue("Display/lock exposure (E)", "true"));
+  ASSERT_TRUE(app_.click("Save/with the window's exposure", 0.05));
+  ASSERT_TRUE(app_.waitForValue("Save/with the window's exposure", "true"));
+  ASSERT_TRUE(app_.click("Display/EV offset", 0.9));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Display/EV offset") != "0"; }));
+  ASSERT_TRUE(app_.tap("ctrl+s"));
+  ASSERT_TRUE(app_.waitFor([&] { return fs::exists(app_.dir() / "saved.tiff"); }));
+  EXPECT_NE(imageDescription(app_.dir() / "saved.tiff").find("the previewer's exposure"),
+            std::string::npos);
+  // Save scene as writes the scene shown as .sc.
+  ASSERT_TRUE(app_.click("Save/Save scene as .sc"));
+  EXPECT_TRUE(app_.waitFor([&] { return fs::exists(app_.dir() / "a-view.sc"); }))
+      << "the scene field: " << app_.value("Save/scene path");
 }
 
 // No two widgets share an ImGui id (the dump refuses to be written then), and

@@ -142,9 +142,21 @@ void ImageDisplay::upload(int width, int height, const std::vector<Rgb>& radianc
 
 void ImageDisplay::draw(const DisplayView& view) const {
   if (width_ <= 0 || height_ <= 0) return;
-  const int w = std::max(1, int(float(width_) * view.zoom + 0.5f));
-  const int h = std::max(1, int(float(height_) * view.zoom + 0.5f));
-  glViewport(view.x, view.y, w, h);
+  // The image's rectangle, within the clip rectangle: the viewport. The
+  // shader finds each fragment's texel from the origin and the zoom, so the
+  // viewport may be any part of the image (a zoom of 64 would make the whole
+  // image far larger than a viewport may be).
+  long long x0 = view.x, y0 = view.y;
+  long long x1 = x0 + std::max(1LL, (long long)(double(width_) * view.zoom + 0.5));
+  long long y1 = y0 + std::max(1LL, (long long)(double(height_) * view.zoom + 0.5));
+  if (view.clipWidth > 0) {
+    x0 = std::max<long long>(x0, view.clipX);
+    y0 = std::max<long long>(y0, view.clipY);
+    x1 = std::min<long long>(x1, (long long)view.clipX + view.clipWidth);
+    y1 = std::min<long long>(y1, (long long)view.clipY + view.clipHeight);
+  }
+  if (x1 <= x0 || y1 <= y0) return;
+  glViewport(int(x0), int(y0), int(x1 - x0), int(y1 - y0));
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);

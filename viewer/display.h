@@ -20,6 +20,9 @@ struct DisplayView {
   float zoom = 1.0f;    // framebuffer pixels per image pixel (1: 1:1, < 1: scaled to fit)
   float scale = 0.0f;   // exposure, exposureScale(avgmax): 128 / avgmax, 0 for black
   bool overlay = false; // tint the supersampled pixels
+  // Only the part of the image inside this rectangle is drawn (a zoomed image
+  // may be far larger than the window); none when clipWidth is 0.
+  int clipX = 0, clipY = 0, clipWidth = 0, clipHeight = 0;
 };
 
 class ImageDisplay {
@@ -37,7 +40,8 @@ public:
               const std::vector<std::uint8_t>& supersampled);
 
   // Draws the image into the rectangle `view` describes (width() * zoom by
-  // height() * zoom pixels); nothing outside it is touched.
+  // height() * zoom pixels), within its clip rectangle; nothing outside both
+  // is touched.
   void draw(const DisplayView& view) const;
 
   int width() const { return width_; }

@@ -4,6 +4,8 @@
 #include "input_latch.h"
 #include "panels.h"
 
+#include "core/exposure.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -16,10 +18,25 @@ namespace {
 
 constexpr double kOrbitDegreesPerPixel = 0.3;
 constexpr double kZoomPerWheelStep = 0.9;
+constexpr float kPictureZoomPerStep = 1.25f;
+constexpr double kDragThreshold = 3.0; // pixels the pointer moves before a press is a drag
 
 } // namespace
 
 float statusHeight(const WindowState& state) { return kStatusHeight * state.uiScale; }
+
+std::string pixelText(const ViewController& c, const WindowState& state, glm::ivec2 pixel) {
+  const SessionImage& image = c.image();
+  if (pixel.x >= image.width || pixel.y >= image.height) return "";
+  const Rgb& r =
+      image.radiance[std::size_t(pixel.y) * std::size_t(image.width) + std::size_t(pixel.x)];
+  const float scale = state.exposure.scale();
+  char text[160];
+  std::snprintf(text, sizeof text, "pixel (%d, %d): radiance %.4g %.4g %.4g -> %d %d %d", pixel.x,
+                pixel.y, double(r.r), double(r.g), double(r.b), int(exposeChannel(r.r, scale)),
+                int(exposeChannel(r.g, scale)), int(exposeChannel(r.b, scale)));
+  return text;
+}
 
 ImageLayout layoutImage(float windowWidth, float windowHeight, const WindowState& state,
                         int imageWidth, int imageHeight) {
@@ -30,60 +47,120 @@ ImageLayout layoutImage(float windowWidth, float windowHeight, const WindowState
   l.imageWidth = imageWidth;
   l.imageHeight = imageHeight;
   if (imageWidth <= 0 || imageHeight <= 0) return l;
-  l.zoom = std::min({1.0f, l.areaWidth / float(imageWidth), l.areaHeight / float(imageHeight)});
+  l.fit = state.picture.fit;
+  l.zoom = l.fit ? fitZoom(l) : state.picture.zoom;
+  const glm::vec2 centre = l.fit ? glm::vec2(0.5f) : state.picture.centre;
   // Whole pixels, so that at 1:1 every image pixel is exactly one window pixel.
-  l.left = std::floor((l.areaWidth - float(imageWidth) * l.zoom) * 0.5f);
-  l.top = std::floor((l.areaHeight - float(imageHeight) * l.zoom) * 0.5f);
+  l.left = std::floor(0.5f * l.areaWidth - centre.x * float(imageWidth) * l.zoom);
+  l.top = std::floor(0.5f * l.areaHeight - centre.y * float(imageHeight) * l.zoom);
   return l;
 }
 
-void navigateWithMouse(ViewController& c, const ImageLayout& l, ImageDrag& drag) {
+float fitZoom(const ImageLayout& l) {
+  if (l.imageWidth <= 0 || l.imageHeight <= 0) return 1.0f;
+  return std::min({1.0f, l.areaWidth / float(l.imageWidth), l.areaHeight / float(l.imageHeight)});
+}
+
+std::optional<glm::ivec2> pixelAt(const ImageLayout& l, ImVec2 point) {
+  const float x = (point.x - l.left) / l.zoom, y = (point.y - l.top) / l.zoom;
+  if (!(point.x >= 0.0f && point.x < l.areaWidth && point.y >= 0.0f && point.y < l.areaHeight))
+    return std::nullopt;
+  if (!(x >= 0.0f && y >= 0.0f && x < float(l.imageWidth) && y < float(l.imageHeight)))
+    return std::nullopt;
+  return glm::ivec2(int(x), int(y));
+}
+
+void zoomPicture(WindowState& state, const ImageLayout& l, float factor, ImVec2 about) {
+  if (l.imageWidth <= 0 || l.imageHeight <= 0) return;
+  const float zoom = std::clamp(l.zoom * factor, std::min(kMinZoom, fitZoom(l)), kMaxZoom);
+  // The image point under `about` stays under it.
+  const glm::vec2 point((about.x - l.left) / l.zoom, (about.y - l.top) / l.zoom);
+  const glm::vec2 left(about.x - point.x * zoom, about.y - point.y * zoom);
+  state.picture.fit = false;
+  state.picture.zoom = zoom;
+  state.picture.centre = glm::vec2((0.5f * l.areaWidth - left.x) / (float(l.imageWidth) * zoom),
+                                   (0.5f * l.areaHeight - left.y) / (float(l.imageHeight) * zoom));
+}
+
+void navigateWithMouse(ViewController& c, const ImageLayout& l, WindowState& state,
+                       ImageDrag& drag) {
   const ImGuiIO& io = ImGui::GetIO();
   const auto inArea = [&](glm::dvec2 p) {
     return p.x >= 0.0 && p.x < double(l.areaWidth) && p.y >= 0.0 && p.y < double(l.areaHeight);
   };
   const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
   const bool onImage = inArea(mouse) && !io.WantCaptureMouse; // not over or busy with the panel
+  state.hovered = onImage ? pixelAt(l, io.MousePos) : std::nullopt;
   const CameraSpec& camera = c.scene().camera;
   glm::dvec2 delta(io.MouseDelta.x, io.MouseDelta.y);
   if (drag.button < 0) {
     for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle}) {
       if (!onImage || !ImGui::IsMouseClicked(button)) continue;
       drag.button = button;
-      c.beginGesture(); // the whole drag is one undo step
+      drag.picture = io.KeyCtrl; // Ctrl + drag moves the picture, not the camera
+      drag.pending = glm::dvec2(0.0);
+      drag.moved = false;
+      drag.start = io.MousePos;
+      if (!drag.picture) c.beginGesture(); // the whole drag is one undo step
       // The motion since the press counts (under load a whole drag can fit in
       // one frame); the pointer's jump to where it was pressed does not.
       delta = mouse - pressedAt(button).value_or(mouse);
     }
     if (drag.button < 0) {
-      if (onImage && io.MouseWheel != 0.0f)
-        c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
+      if (onImage && io.MouseWheel != 0.0f) {
+        if (io.KeyCtrl) { // the picture: zoom about the pointer
+          zoomPicture(state, l, std::pow(kPictureZoomPerStep, io.MouseWheel), io.MousePos);
+        } else { // the camera: toward or away from lookat
+          c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
+        }
+      }
       return;
     }
   }
-  // The motion up to the release counts too.
-  const double dx = delta.x / double(l.zoom); // image pixels
-  const double dy = delta.y / double(l.zoom);
-  if (dx != 0.0 || dy != 0.0) {
-    if (drag.button == ImGuiMouseButton_Left && !io.KeyShift) {
+  // A drag begins once the pointer has moved a few pixels from the press; a
+  // press and release without that is a click, which inspects the pixel.
+  drag.pending += delta;
+  if (!drag.moved && glm::length(drag.pending) >= kDragThreshold) drag.moved = true;
+  if (drag.moved && drag.pending != glm::dvec2(0.0)) {
+    const double dx = drag.pending.x / double(l.zoom); // image pixels
+    const double dy = drag.pending.y / double(l.zoom);
+    if (drag.picture) {
+      state.picture.fit = false;
+      state.picture.zoom = l.zoom;
+      state.picture.centre =
+          (l.fit ? glm::vec2(0.5f) : state.picture.centre) -
+          glm::vec2(float(dx) / float(l.imageWidth), float(dy) / float(l.imageHeight));
+    } else if (drag.button == ImGuiMouseButton_Left && !io.KeyShift) {
       // Dragging right turns the scene right: the eye goes the other way.
       c.setCamera(orbit(camera, -dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel));
     } else {
       c.setCamera(pan(camera, dx, dy, c.settings().height));
     }
+    drag.pending = glm::dvec2(0.0);
   }
   if (!ImGui::IsMouseDown(drag.button)) {
+    if (!drag.moved && drag.button == ImGuiMouseButton_Left) {
+      if (const std::optional<glm::ivec2> pixel = pixelAt(l, drag.start)) inspect(c, state, *pixel);
+    }
+    if (!drag.picture) c.endGesture();
     drag.button = -1;
-    c.endGesture();
   }
+}
+
+void inspect(const ViewController& c, WindowState& state, glm::ivec2 pixel) {
+  state.inspected = pixel;
+  state.rayTree = c.pixelRayTree(pixel.x, pixel.y);
+  state.rayTreeRestarts = c.progress().restarts;
 }
 
 void drawLightMarkers(const ViewController& c, const ImageLayout& l) {
   const Scene& scene = c.scene();
   const RenderSettings s = c.settings();
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  const ImVec2 min(l.left, l.top);
-  const ImVec2 max(l.left + float(s.width) * l.zoom, l.top + float(s.height) * l.zoom);
+  // The part of the picture in view (zoomed in, it may overflow its area).
+  const ImVec2 min(std::max(l.left, 0.0f), std::max(l.top, 0.0f));
+  const ImVec2 max(std::min(l.left + float(s.width) * l.zoom, l.areaWidth),
+                   std::min(l.top + float(s.height) * l.zoom, l.areaHeight));
   constexpr float kInset = 12.0f; // off-screen lights are pinned this far inside the border
   draw->PushClipRect(min, max, true);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -134,9 +211,10 @@ void drawStatusLine(const ViewController& c, const WindowState& state, const Ima
                 state.exposure.ev() != 0.0 ? " with EV offset" : "");
   text += exposure;
   char zoom[32];
-  std::snprintf(zoom, sizeof zoom, l.zoom == 1.0f ? "   1:1" : "   %.0f%% (fit)",
-                100.0 * double(l.zoom));
+  std::snprintf(zoom, sizeof zoom, l.zoom == 1.0f ? "   1:1" : "   %.0f%%%s",
+                100.0 * double(l.zoom), l.fit ? " (fit)" : "");
   text += zoom;
+  if (state.hovered) text += "   " + pixelText(c, state, *state.hovered);
   if (errors) text += "   scene errors: see the panel; showing the last good scene";
   if (!state.note.empty()) text += "   " + state.note;
   const ImVec2 at(8.0f * state.uiScale, y + 0.5f * (h - ImGui::GetFontSize()));

@@ -6,6 +6,13 @@
 #include "panels.h"
 #include "view_controller.h"
 
+#include <imgui.h>
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+#include <string>
+
 namespace prism {
 
 // Window pixels (origin top-left), for the image at its current size.
@@ -15,7 +22,8 @@ struct ImageLayout {
   float areaHeight = 0.0f;
   float left = 0.0f; // the image's top-left corner
   float top = 0.0f;
-  float zoom = 1.0f; // window pixels per image pixel: 1, or less to fit
+  float zoom = 1.0f; // window pixels per image pixel
+  bool fit = true;   // 1:1 or scaled down to fit, as opposed to zoomed by the user
   int imageWidth = 0;
   int imageHeight = 0;
 };
@@ -28,17 +36,44 @@ float statusHeight(const WindowState& state);
 ImageLayout layoutImage(float windowWidth, float windowHeight, const WindowState& state,
                         int imageWidth, int imageHeight);
 
-// A mouse drag that began on the image (not on the panel): which button.
+// The zoom at which the picture fits its area (1 when it fits at 1:1).
+float fitZoom(const ImageLayout& layout);
+
+// The picture's zoom limits, window pixels per image pixel.
+inline constexpr float kMinZoom = 1.0f / 16.0f;
+inline constexpr float kMaxZoom = 64.0f;
+
+// Zooms the picture by `factor` keeping the image point under `about` (window
+// pixels) where it is; the camera does not move.
+void zoomPicture(WindowState& state, const ImageLayout& layout, float factor, ImVec2 about);
+
+// The image pixel under a window point, if any.
+std::optional<glm::ivec2> pixelAt(const ImageLayout& layout, ImVec2 point);
+
+// "pixel (12, 34): radiance 0.1 0.2 0.3 -> 16 32 48": what the picture holds
+// there and the 8-bit value the window shows for it.
+std::string pixelText(const ViewController& controller, const WindowState& state, glm::ivec2 pixel);
+
+// Shows pixel `pixel`'s ray tree in the panel.
+void inspect(const ViewController& controller, WindowState& state, glm::ivec2 pixel);
+
+// A mouse press that began on the image (not on the panel).
 struct ImageDrag {
-  int button = -1; // ImGuiMouseButton, or -1 when no drag is under way
+  int button = -1;         // ImGuiMouseButton, or -1 when none is under way
+  bool picture = false;    // Ctrl was held: it moves the picture, not the camera
+  bool moved = false;      // past the threshold: a drag, not a click
+  glm::dvec2 pending{0.0}; // motion not applied yet (below the threshold)
+  ImVec2 start;            // where it was pressed
 };
 
-// Orbit (left drag), pan (right or middle drag, or shift + left drag) and zoom
-// (wheel) when the mouse works on the image rather than on the panel. A drag
-// moves the camera by the motion since the button went down (never by the
-// pointer's jump to where it was pressed) up to its release, and is one undo
-// step.
-void navigateWithMouse(ViewController& controller, const ImageLayout& layout, ImageDrag& drag);
+// The mouse on the picture (not on the panel): orbit (left drag), pan (right
+// or middle drag, or shift + left drag) and zoom (wheel) the camera; move
+// (Ctrl + drag) and zoom (Ctrl + wheel) the picture; inspect a pixel (click).
+// A drag moves by the motion since the button went down (never by the
+// pointer's jump to where it was pressed) up to its release, and a camera
+// drag is one undo step. Also notes the pixel under the mouse.
+void navigateWithMouse(ViewController& controller, const ImageLayout& layout, WindowState& state,
+                       ImageDrag& drag);
 
 // Numbered circles where the lights are, in the colour of their intensity.
 void drawLightMarkers(const ViewController& controller, const ImageLayout& layout);

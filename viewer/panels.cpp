@@ -1,5 +1,6 @@
 #include "panels.h"
 
+#include "image_view.h"
 #include "number_text.h"
 #include "widgets.h"
 
@@ -7,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -185,6 +187,81 @@ void displaySection(ViewController& c, WindowState& state) {
   dimText(source);
 }
 
+// The picture's zoom (the camera stays), and the comparison with a pinned
+// render.
+void viewSection(ViewController& c, WindowState& state, float shownZoom) {
+  float percent = 100.0f * shownZoom;
+  if (ui::sliderFloat("zoom %", &percent, 100.0f * kMinZoom, 100.0f * kMaxZoom, "%.0f%%",
+                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+    state.picture.fit = false;
+    state.picture.zoom = percent / 100.0f;
+  }
+  if (ui::button("Fit (F)")) state.picture.fit = true;
+  ImGui::SameLine();
+  if (ui::button("1:1 (1)")) setPictureActualSize(state);
+  ImGui::SameLine();
+  dimText("Ctrl + wheel zooms, Ctrl + drag moves");
+  if (ui::button("Pin this render (P)")) pinRender(c, state);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("keep the picture as it is now, to compare the next one with it");
+  if (!state.pinned.valid) return;
+  int mode = int(state.compare);
+  bool changed = ui::radioButton("off", &mode, int(CompareMode::Off));
+  ImGui::SameLine();
+  changed |= ui::radioButton("flip (B)", &mode, int(CompareMode::Flip));
+  ImGui::SameLine();
+  changed |= ui::radioButton("split", &mode, int(CompareMode::Split));
+  if (changed) state.compare = CompareMode(mode);
+  if (state.compare == CompareMode::Split)
+    ui::sliderFloat("split at", &state.split, 0.0f, 1.0f, "%.2f");
+  if (state.compare == CompareMode::Flip)
+    ui::checkbox("show the pinned render (B)", &state.showPinned);
+  // The speed/accuracy trade made visible: what each render cost.
+  const auto row = [](const char* what, const std::string& live, const std::string& pinned) {
+    ImGui::TableNextColumn();
+    ImGui::TextColored(kDimColour, "%s", what);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(live.c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(pinned.c_str());
+  };
+  const auto figures = [](const RenderSettings& s, const SessionProgress& p) {
+    const double pixels = std::max(1.0, double(s.width) * double(s.height));
+    char time[32], rays[32], share[32], settings[48];
+    std::snprintf(time, sizeof time, "%.2f s", p.elapsedSeconds);
+    std::snprintf(rays, sizeof rays, "%.2f", double(p.counts.total()) / pixels);
+    std::snprintf(share, sizeof share, "%.1f%%", 100.0 * double(p.supersampledPixels) / pixels);
+    std::snprintf(settings, sizeof settings, "depth %d, %.3g", s.maxDepth, s.thresh);
+    return std::array<std::string, 4>{time, rays, share, settings};
+  };
+  const auto live = figures(c.settings(), c.progress());
+  const auto pinned = figures(state.pinned.settings, state.pinned.progress);
+  if (ImGui::BeginTable("compare", 3, ImGuiTableFlags_SizingStretchSame)) {
+    row("", "live", "pinned");
+    row("time", live[0], pinned[0]);
+    row("rays / pixel", live[1], pinned[1]);
+    row("supersampled", live[2], pinned[2]);
+    row("depth, thresh", live[3], pinned[3]);
+    ImGui::EndTable();
+  }
+}
+
+// The ray tree of the pixel last clicked on the picture.
+void pixelSection(WindowState& state) {
+  if (!state.inspected) {
+    dimText("Click the picture to see a pixel's ray tree; hover to read its value.");
+    return;
+  }
+  if (ui::button("Close")) {
+    state.inspected.reset();
+    return;
+  }
+  ImGui::BeginChild("ray tree", ImVec2(0.0f, 260.0f * state.uiScale), true,
+                    ImGuiWindowFlags_HorizontalScrollbar);
+  ImGui::TextUnformatted(state.rayTree.c_str());
+  ImGui::EndChild();
+}
+
 void saveSection(ViewController& c, WindowState& state) {
   ImGui::SetNextItemWidth(-1.0f);
   ui::inputText("##path", &state.savePath);
@@ -192,6 +269,10 @@ void saveSection(ViewController& c, WindowState& state) {
   ImGui::BeginDisabled(busy || state.savePath.empty());
   if (ui::button("Save picture (Ctrl+S)")) savePicture(c, state);
   ImGui::EndDisabled();
+  ui::checkbox("with the window's exposure", &state.saveWindowExposure);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("otherwise the picture is exposed automatically, as prism render does "
+                      "(the file's description says which)");
   const SaveJob& job = c.saveJob();
   if (job.state() == SaveJob::State::WaitingForRender) {
     ImGui::ProgressBar(float(state.estimate.timeFraction()), ImVec2(-1.0f, 0.0f),
@@ -264,6 +345,12 @@ constexpr KeyHelp kKeys[] = {
     {"right drag, middle drag, shift + left drag", "pan: the point under the mouse stays under it"},
     {"mouse wheel", "zoom: move the eye toward or away from lookat"},
     {"Home", "back to the scene file's camera"},
+    {"click on the picture", "show that pixel's ray tree (hover: its value)"},
+    {"Ctrl + wheel, Ctrl + drag", "zoom and move the picture (the camera stays)"},
+    {"F, 1", "fit the picture to the window; show it at 1:1"},
+    {"P", "pin this render for comparison"},
+    {"B", "flip between the live and the pinned render"},
+    {"Esc", "close the pixel's ray tree"},
     {"R, F5", "reload the scene files"},
     {"O", "tint the supersampled pixels"},
     {"L", "show the lights"},
@@ -295,7 +382,7 @@ std::string phaseText(const SessionProgress& p) {
 }
 
 void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& frames, float width,
-                      float height) {
+                      float height, float shownZoom) {
   if (!state.panelVisible) return;
   const float panel = panelWidth(state);
   ImGui::SetNextWindowPos(ImVec2(width - panel, 0.0f));
@@ -319,6 +406,8 @@ void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& f
   section("Lights", [&] { lightsSection(c, state); });
   section("Camera", [&] { cameraSection(c, state); });
   section("Display", [&] { displaySection(c, state); });
+  section("View", [&] { viewSection(c, state, shownZoom); });
+  section("Pixel", [&] { pixelSection(state); });
   section("Save", [&] { saveSection(c, state); });
   section("Statistics", [&] { statisticsSection(c, state, frames); });
   ImGui::PopItemWidth();
@@ -355,9 +444,31 @@ void drawHelp(WindowState& state, float width, float height) {
   ImGui::End();
 }
 
+void pinRender(const ViewController& c, WindowState& state) {
+  PinnedRender& pinned = state.pinned;
+  pinned.image = c.image();
+  pinned.scale = state.exposure.scale();
+  pinned.settings = c.settings();
+  pinned.progress = c.progress();
+  pinned.valid = true;
+  ++pinned.generation;
+  if (state.compare == CompareMode::Off) state.compare = CompareMode::Flip;
+}
+
+void setPictureActualSize(WindowState& state) {
+  state.picture.fit = false;
+  state.picture.zoom = 1.0f;
+}
+
 void savePicture(ViewController& c, WindowState& state) {
   if (state.savePath.empty()) return;
-  c.save(state.savePath);
+  PictureExposure exposure; // SPEC's automatic exposure, unless the user asks
+  if (state.saveWindowExposure && !state.exposure.automatic()) {
+    exposure.automatic = false;
+    exposure.avgmax = state.exposure.avgmax();
+    exposure.ev = state.exposure.ev();
+  }
+  c.save(state.savePath, exposure);
   state.note =
       c.sceneErrors().empty() ? "" : "the scene files have errors: saving the last good scene";
 }
@@ -381,6 +492,14 @@ void handleShortcuts(ViewController& c, WindowState& state) {
   if (pressed(GLFW_KEY_TAB)) state.panelVisible = !state.panelVisible;
   if (pressed(GLFW_KEY_F1)) state.showHelp = !state.showHelp;
   if (pressed(GLFW_KEY_HOME)) c.resetCamera();
+  if (pressed(GLFW_KEY_F)) state.picture.fit = true;
+  if (pressed(GLFW_KEY_1)) setPictureActualSize(state);
+  if (pressed(GLFW_KEY_P)) pinRender(c, state);
+  if (pressed(GLFW_KEY_B) && state.pinned.valid) {
+    state.compare = CompareMode::Flip;
+    state.showPinned = !state.showPinned;
+  }
+  if (pressed(GLFW_KEY_ESCAPE)) state.inspected.reset();
 }
 
 } // namespace prism

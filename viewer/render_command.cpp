@@ -11,6 +11,8 @@
 #include "core/model_range.h"
 #include "core/parallel.h"
 #include "core/pending_file.h"
+#include "core/picture_writer.h"
+#include "core/pixel_tree.h"
 #include "core/scene_loader.h"
 #include "core/stats.h"
 #include "core/system_info.h"
@@ -44,22 +46,6 @@ std::string number(double x) {
 Vec3 point(const std::vector<double>& xyz) { return Vec3(xyz[0], xyz[1], xyz[2]); }
 
 std::string text(const Vec3& v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
-
-int printPixelTree(const Scene& scene, const Accel& accel, const RenderSettings& settings, int x,
-                   int y) {
-  const Camera camera(scene.camera, settings.width, settings.height);
-  Tracer tracer(scene, accel, settings.maxDepth);
-  RayCounts counts;
-  RayTreeNode root;
-  tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts, &root);
-  std::cout << "pixel (" << x << ", " << y << ") of " << settings.width << " x " << settings.height
-            << ", max depth " << settings.maxDepth << ": centre ray\n";
-  printRayTree(std::cout, root, scene);
-  std::cout << "rays: 1 eye, " << counts.shadow << " shadow, " << counts.reflected << " reflected, "
-            << counts.transmitted << " transmitted (" << counts.tirEvents
-            << " total internal reflections)\n";
-  return kExitOk;
-}
 
 } // namespace
 
@@ -214,7 +200,10 @@ int runRenderCommand(const RenderCommandOptions& o) {
   const auto buildStart = Clock::now();
   const auto accel = makeAccel(scene, o.accel);
   const double buildSeconds = secondsSince(buildStart);
-  if (!o.pixel.empty()) return printPixelTree(scene, *accel, settings, o.pixel[0], o.pixel[1]);
+  if (!o.pixel.empty()) {
+    std::cout << pixelRayTreeText(scene, *accel, settings, o.pixel[0], o.pixel[1]);
+    return kExitOk;
+  }
 
   RenderStats stats;
   const double cpuStart = processCpuSeconds();
@@ -227,14 +216,8 @@ int runRenderCommand(const RenderCommandOptions& o) {
   stats.wallSeconds = secondsSince(renderStart);
   stats.cpuSeconds = processCpuSeconds() - cpuStart;
 
-  const bool written = succeeds([&] {
-    if (isFloatFormat(o.output) || o.floatTiff) {
-      writeImageFloat(o.output, settings.width, settings.height, result.film.radiance);
-    } else {
-      writeImage8(o.output, settings.width, settings.height,
-                  exposeImage(result.film.radiance, exposureScale(result.avgmax)));
-    }
-  });
+  const bool written =
+      succeeds([&] { writePicture(o.output, result, isFloatFormat(o.output) || o.floatTiff); });
   if (!written) return kExitFailure;
 
   stats.scene = o.scene;

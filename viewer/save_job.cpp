@@ -1,23 +1,11 @@
 #include "save_job.h"
 
-#include "core/exposure.h"
 #include "core/image_io.h"
 
 #include <chrono>
 #include <iostream>
 
 namespace prism {
-
-void writeRenderResult(const std::filesystem::path& path, const RenderResult& result) {
-  const Film& film = result.film;
-  // The same calls as `prism render` (viewer/render_command.cpp), so the files agree.
-  if (isFloatFormat(path)) {
-    writeImageFloat(path, film.width, film.height, film.radiance);
-  } else {
-    writeImage8(path, film.width, film.height,
-                exposeImage(film.radiance, exposureScale(result.avgmax)));
-  }
-}
 
 // Shown in the panel, and printed for whoever started the previewer from a
 // terminal (as scene errors are).
@@ -31,9 +19,10 @@ SaveJob::~SaveJob() {
   if (writing_.valid()) writing_.wait();
 }
 
-void SaveJob::start(const std::filesystem::path& path) {
+void SaveJob::start(const std::filesystem::path& path, const PictureExposure& exposure) {
   if (state_ == State::Writing) writing_.wait(); // one file at a time
   path_ = path;
+  exposure_ = exposure;
   try {
     checkWritable(path);
   } catch (const std::exception& error) {
@@ -57,14 +46,16 @@ void SaveJob::poll(RenderSession& session) {
     }
     message_ = "writing " + path_.string();
     state_ = State::Writing;
-    writing_ = std::async(std::launch::async, [result, path = path_]() -> std::string {
-      try {
-        writeRenderResult(path, *result);
-        return {};
-      } catch (const std::exception& error) {
-        return error.what();
-      }
-    });
+    writing_ = std::async(std::launch::async,
+                          [result, path = path_, exposure = exposure_]() -> std::string {
+                            try {
+                              // The same routine as `prism render`, so the files agree.
+                              writePicture(path, *result, isFloatFormat(path), exposure);
+                              return {};
+                            } catch (const std::exception& error) {
+                              return error.what();
+                            }
+                          });
   }
   if (state_ == State::Writing &&
       writing_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {

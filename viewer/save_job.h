@@ -4,6 +4,7 @@
 // render by polling, then writes on a helper thread.
 #pragma once
 
+#include "core/picture_writer.h"
 #include "core/render_session.h"
 
 #include <filesystem>
@@ -12,19 +13,17 @@
 
 namespace prism {
 
-// Writes a finished render as `prism render` does: exposed 8-bit pixels, or
-// float radiance for formats that keep it (.exr, .hdr). Throws std::runtime_error.
-void writeRenderResult(const std::filesystem::path& path, const RenderResult& result);
-
 class SaveJob {
 public:
   enum class State { Idle, WaitingForRender, Writing, Saved, Failed };
 
   ~SaveJob(); // waits for a write in progress
 
-  // Starts saving to `path`. Fails at once (state Failed) when the path cannot
-  // be written; a save already in progress is replaced only once it is written.
-  void start(const std::filesystem::path& path);
+  // Starts saving to `path`, as `prism render` writes it: with SPEC's
+  // automatic exposure unless `exposure` says otherwise (the file's metadata
+  // says which). Fails at once (state Failed) when the path cannot be
+  // written; a save already in progress is replaced only once it is written.
+  void start(const std::filesystem::path& path, const PictureExposure& exposure = {});
 
   // Once a frame: takes the picture when the session has finished, and notices
   // when the write is done.
@@ -41,6 +40,7 @@ private:
 
   State state_ = State::Idle;
   std::filesystem::path path_;
+  PictureExposure exposure_;
   std::string message_;
   std::future<std::string> writing_; // the error message, empty on success
 };

@@ -207,7 +207,9 @@ public:
           const ViewAppOptions& options)
       : window_(window), controller_(std::move(controller)), dumpWidgets_(options.dumpWidgets) {
     state_.savePath = options.savePath;
-    state_.scenePath = std::filesystem::path(options.scenePath).stem().string() + "-view.sc";
+    // Beside the scene file: a saved view belongs with the scene it shows.
+    const std::filesystem::path scene(options.scenePath);
+    state_.scenePath = (scene.parent_path() / (scene.stem().string() + "-view.sc")).string();
     state_.uiScale = contentScale(window);
     if (options.script) script_.emplace(*options.script);
   }
@@ -220,6 +222,7 @@ public:
 private:
   void frame();
   void dumpWidgets();
+  void drawPictures(const ImageLayout& layout, int fbHeight, float framebufferScale);
   void takeScreenshot(int width, int height);
   RenderSettings edited(const ScriptAction& a) const;
   std::size_t lightIndex(const ScriptAction& a) const;
@@ -227,6 +230,8 @@ private:
   GLFWwindow* window_;
   std::unique_ptr<ViewController> controller_;
   ImageDisplay display_;
+  ImageDisplay pinnedDisplay_;       // the render pinned for comparison
+  std::uint64_t pinnedUploaded_ = 0; // the pin generation on the GPU
   WindowState state_;
   std::string dumpWidgets_; // --dump-widgets FILE
   ImageDrag drag_;
@@ -275,6 +280,14 @@ void ViewApp::frame() {
   }
   state_.exposure.update(controller_->progress());
   state_.estimate.update(controller_->progress());
+  // An inspected pixel's ray tree follows edits of the scene.
+  if (state_.inspected && state_.rayTreeRestarts != controller_->progress().restarts)
+    inspect(*controller_, state_, *state_.inspected);
+  if (state_.pinned.valid && state_.pinned.generation != pinnedUploaded_) {
+    const SessionImage& pinned = state_.pinned.image;
+    pinnedDisplay_.upload(pinned.width, pinned.height, pinned.radiance, pinned.supersampled);
+    pinnedUploaded_ = state_.pinned.generation;
+  }
   if (script_) script_->step(*this); // may edit, save, request a screenshot or quit
 
   int fbWidth = 0, fbHeight = 0;
@@ -289,8 +302,9 @@ void ViewApp::frame() {
   const ImageLayout layout =
       layoutImage(size.x, size.y, state_, display_.width(), display_.height());
   handleShortcuts(*controller_, state_);
-  navigateWithMouse(*controller_, layout, drag_);
-  drawControlPanel(*controller_, state_, frames_, size.x, size.y - statusHeight(state_));
+  navigateWithMouse(*controller_, layout, state_, drag_);
+  drawControlPanel(*controller_, state_, frames_, size.x, size.y - statusHeight(state_),
+                   layout.zoom);
   if (state_.markers) drawLightMarkers(*controller_, layout);
   drawStatusLine(*controller_, state_, layout);
   drawHelp(state_, size.x, size.y);
@@ -300,21 +314,47 @@ void ViewApp::frame() {
   glViewport(0, 0, fbWidth, fbHeight);
   glClearColor(0.07f, 0.075f, 0.085f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  DisplayView view;
-  // Window coordinates run down from the top; GL's up from the bottom.
-  const float framebufferScale = size.x > 0.0f ? float(fbWidth) / size.x : 1.0f;
-  view.zoom = layout.zoom * framebufferScale;
-  view.x = int(layout.left * framebufferScale);
-  view.y = fbHeight - int((layout.top + float(display_.height()) * layout.zoom) * framebufferScale);
-  view.scale = state_.exposure.scale();
-  view.overlay = state_.overlay;
-  display_.draw(view);
+  drawPictures(layout, fbHeight, size.x > 0.0f ? float(fbWidth) / size.x : 1.0f);
   glViewport(0, 0, fbWidth, fbHeight);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
   if (!screenshotPath_.empty()) takeScreenshot(fbWidth, fbHeight);
   glfwSwapBuffers(window_);
   ++frameNumber_;
+}
+
+// The live picture, and the pinned one where the comparison shows it: all of
+// it (flip) or right of the split.
+void ViewApp::drawPictures(const ImageLayout& layout, int fbHeight, float framebufferScale) {
+  // Window coordinates run down from the top; GL's up from the bottom.
+  DisplayView view;
+  view.zoom = layout.zoom * framebufferScale;
+  view.x = int(layout.left * framebufferScale);
+  view.y = fbHeight - int((layout.top + float(display_.height()) * layout.zoom) * framebufferScale);
+  view.clipX = 0;
+  view.clipY = fbHeight - int(layout.areaHeight * framebufferScale);
+  view.clipWidth = int(layout.areaWidth * framebufferScale);
+  view.clipHeight = int(layout.areaHeight * framebufferScale);
+  view.overlay = state_.overlay;
+  const PinnedRender& pinned = state_.pinned;
+  const bool comparable = pinned.valid && pinned.image.width == display_.width() &&
+                          pinned.image.height == display_.height();
+  const bool flipped = comparable && state_.compare == CompareMode::Flip && state_.showPinned;
+  if (!flipped) {
+    view.scale = state_.exposure.scale();
+    display_.draw(view);
+  }
+  if (!comparable || state_.compare == CompareMode::Off ||
+      (!flipped && state_.compare != CompareMode::Split))
+    return;
+  view.scale = pinned.scale;
+  if (state_.compare == CompareMode::Split) {
+    const int split = int((layout.left + state_.split * float(display_.width()) * layout.zoom) *
+                          framebufferScale);
+    view.clipWidth -= std::max(0, split - view.clipX);
+    view.clipX = std::max(view.clipX, split);
+  }
+  pinnedDisplay_.draw(view);
 }
 
 // The widgets of this frame, for tests that click them (written whole or not

@@ -2,6 +2,7 @@
 
 #include "core/exposure.h"
 #include "core/image_io.h"
+#include "core/pixel_tree.h"
 #include "core/scene_loader.h"
 #include "core/scene_writer.h"
 
@@ -256,6 +257,10 @@ bool ViewController::update(Clock::time_point now) {
   progress_ = session_->progress(); // before the copy: the image has at least this much
   stale_ = false;
   return session_->copyImage(image_);
+}
+
+std::string ViewController::pixelRayTree(int x, int y) const {
+  return pixelRayTreeText(session_->scene(), session_->accel(), session_->settings(), x, y);
 }
 
 float ViewController::exposure() const { return exposureScale(progress_.avgmax); }

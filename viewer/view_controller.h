@@ -100,7 +100,11 @@ public:
   // again after they were read).
   void reload();
   bool reloading() const { return loading_.valid(); }
-  void save(const std::string& path) { save_.start(path); }
+  // Saves the final picture, as `prism render` writes it (SPEC's automatic
+  // exposure unless `exposure` asks for the window's).
+  void save(const std::string& path, const PictureExposure& exposure = {}) {
+    save_.start(path, exposure);
+  }
 
   // Save scene as: writes the scene shown (the files with the user's edits
   // over them) as one .sc file, on a helper thread; the window goes on. The
@@ -132,6 +136,9 @@ public:
   float exposure() const;
 
   RenderSettings settings() const { return session_->settings(); }
+  // The ray tree of pixel (x, y)'s centre ray in the scene shown, as
+  // `prism render --pixel X Y` prints it.
+  std::string pixelRayTree(int x, int y) const;
   const Scene& scene() const { return session_->scene(); }
   // Why the render stopped early (out of memory, say), or "".
   std::string renderFailure() const { return session_->failure(); }

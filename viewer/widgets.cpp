@@ -146,6 +146,11 @@ bool collapsingHeader(const char* label) {
   return noted(open, label, "header", open ? "open" : "closed");
 }
 
+bool radioButton(const char* label, int* value, int mine) {
+  const bool clicked = ImGui::RadioButton(label, value, mine);
+  return noted(clicked, label, "radio", *value == mine ? "true" : "false");
+}
+
 bool selectable(const char* label, bool selected) {
   return noted(ImGui::Selectable(label, selected), label, "selectable");
 }

@@ -75,6 +75,8 @@ bool dragDoubles(const char* label, double* values, int count, float speed, cons
 bool inputText(const char* label, std::string* text);
 bool collapsingHeader(const char* label);
 bool selectable(const char* label, bool selected = false);
+// One of a group: sets *value to `mine` when clicked.
+bool radioButton(const char* label, int* value, int mine);
 
 } // namespace ui
 

@@ -134,6 +134,43 @@ TEST(ViewController, ReloadsInTheBackgroundAndPutsTheSceneInPlaceOnUpdate) {
   EXPECT_EQ(c.failedReloads(), 0);
 }
 
+// Opening another scene: it takes this one's place once read, without this
+// one's edits or history; the render settings stay. A scene with errors
+// leaves the current one in place.
+TEST(ViewController, OpensAnotherSceneAFreshStart) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+  CameraSpec moved = c.scene().camera;
+  moved.eye += Vec3(1.0, 0.0, 0.0);
+  c.setCamera(moved);
+  RenderSettings deeper = c.settings();
+  deeper.maxDepth = 3;
+  c.setSettings(deeper);
+  ASSERT_TRUE(c.canUndo());
+  writeFile(dir / "other.sc", "eye 0 0 9\nlight 1 1 1 5 5 5\nlight 2 2 2 5 5 5\n"
+                              "light 3 3 3 5 5 5\nsphere 0 0 0 1\n");
+  c.open((dir / "other.sc").string());
+  updateUntil(c, [&] { return c.successfulReloads() == 1; });
+  EXPECT_EQ(c.scenePath(), (dir / "other.sc").string());
+  EXPECT_EQ(c.scene().lights.size(), 3u);
+  EXPECT_EQ(c.scene().camera.eye, Vec3(0, 0, 9)); // the new file's, not the edited one
+  EXPECT_FALSE(c.canUndo());
+  EXPECT_EQ(c.settings().maxDepth, 3);
+  // A broken one: the scene stays, the errors say why.
+  writeFile(dir / "broken.sc", "sphere 0 0 0 -1\n");
+  c.open((dir / "broken.sc").string());
+  updateUntil(c, [&] { return c.failedReloads() == 1; });
+  EXPECT_EQ(c.scenePath(), (dir / "other.sc").string());
+  ASSERT_FALSE(c.sceneErrors().empty());
+  EXPECT_NE(c.sceneErrors()[0].find("broken.sc:1:"), std::string::npos);
+  // Asked for while a reload is being read: opened right after it.
+  c.reload();
+  c.open((dir / "main.sc").string());
+  updateUntil(c, [&] { return c.scenePath() == (dir / "main.sc").string(); });
+  EXPECT_EQ(c.scene().lights.size(), 1u);
+}
+
 TEST(ViewController, ShowsWhatLoadingTheSceneWarnedAbout) {
   ScratchDir dir;
   writeFile(dir / "main.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"

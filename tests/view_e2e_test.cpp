@@ -11,6 +11,14 @@ namespace {
 
 const std::string kPrism = std::string("'") + PRISM_BINARY + "'";
 
+// The previewers these tests start keep their recent scenes here, not in the
+// user's configuration folder.
+const bool kPrivateConfig = [] {
+  const std::string folder =
+      (fs::temp_directory_path() / ("prism_e2e_config_" + std::to_string(getpid()))).string();
+  return setenv("XDG_CONFIG_HOME", folder.c_str(), 1) == 0;
+}();
+
 // xvfb-run with a display number of its own. `-a` alone starts looking at :99,
 // so two test runs on one machine (say, a Release and a sanitizer build) can
 // race for the same number and one Xvfb fails to start: start elsewhere for

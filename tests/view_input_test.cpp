@@ -130,10 +130,11 @@ public:
     writeFile(dir_ / "ready.txt", "wait done\necho ready\n");
     errFile_ = dir_ / "stderr.txt";
     const int err = open(errFile_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_ = spawn({PRISM_BINARY, "view", (dir_ / "a.sc").string(), "-o",
-                  (dir_ / "saved.tiff").string(), "--dump-widgets",
-                  (dir_ / "widgets.json").string(), "--script", (dir_ / "ready.txt").string()},
-                 {"DISPLAY=" + display_}, &out_, err);
+    pid_ =
+        spawn({PRISM_BINARY, "view", (dir_ / "a.sc").string(), "-o", (dir_ / "saved.tiff").string(),
+               "--dump-widgets", (dir_ / "widgets.json").string(), "--script",
+               (dir_ / "ready.txt").string()},
+              {"DISPLAY=" + display_, "XDG_CONFIG_HOME=" + (dir_ / "config").string()}, &out_, err);
     close(err);
     ready_ = readLine(out_, 60.0) == std::optional<std::string>("ready");
   }
@@ -448,6 +449,25 @@ TEST_F(ViewInput, SaveSaysHowThePictureWasExposed) {
       << "the scene field: " << app_.value("Save/scene path");
 }
 
+// Ctrl+O opens the dialog; a click on a scene opens it, and it is listed
+// among the recent scenes (kept in the user's configuration folder).
+TEST_F(ViewInput, OpenAnotherScene) {
+  writeFile(app_.dir() / "other.sc", sceneText(3));
+  ASSERT_TRUE(app_.tap("ctrl+o"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Open/folder/other.sc").has_value(); }));
+  ASSERT_TRUE(app_.click("Open/folder/other.sc"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 3/light 3").has_value(); }));
+  EXPECT_FALSE(app_.widget("Open/folder/other.sc").has_value()); // the dialog closed
+  ASSERT_TRUE(app_.click("Scene/Open... (Ctrl+O)"));
+  const std::string other = (app_.dir() / "other.sc").string();
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Open/recent/" + other).has_value(); }));
+  EXPECT_NE(slurp(app_.dir() / "config" / "prism" / "recent-scenes").find(other),
+            std::string::npos);
+  // Back to the first scene from the recent list.
+  ASSERT_TRUE(app_.click("Open/recent/" + (app_.dir() / "a.sc").string()));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Lights/light 3/light 3").has_value(); }));
+}
+
 // No two widgets share an ImGui id (the dump refuses to be written then), and
 // every widget has a place inside the window.
 TEST_F(ViewInput, EveryWidgetHasAPlaceAndAUniqueName) {
@@ -457,6 +477,9 @@ TEST_F(ViewInput, EveryWidgetHasAPlaceAndAUniqueName) {
   for (const json& w : widgets) {
     EXPECT_TRUE(names.insert(w["name"].get<std::string>()).second) << w["name"];
     EXPECT_GE(w["x"].get<double>(), 0.0);
+    // Never cut off at the side: the window is the 320-pixel image and the
+    // 360-pixel panel wide.
+    EXPECT_LE(w["x"].get<double>() + w["w"].get<double>(), 680.0) << w["name"];
     EXPECT_GT(w["w"].get<double>(), 0.0);
     EXPECT_GT(w["h"].get<double>(), 0.0);
   }
@@ -478,7 +501,7 @@ TEST(ViewLoading, TheWindowOpensAtOnceAndSaysWhatItIsReading) {
   int out = -1;
   const pid_t pid =
       spawn({PRISM_BINARY, "view", scene.string(), "--script", (dir / "ready.txt").string()},
-            {"DISPLAY=" + x.display()}, &out, err);
+            {"DISPLAY=" + x.display(), "XDG_CONFIG_HOME=" + (dir / "config").string()}, &out, err);
   close(err);
   // The window exists while the scene cannot have been read.
   EXPECT_TRUE(xdotool(x.display(), "search --sync --name 'Prism - .*slow.sc'"));

@@ -6,10 +6,15 @@
 #include "viewer/live_exposure.h"
 #include "viewer/number_text.h"
 #include "viewer/progress_estimate.h"
+#include "viewer/scene_files.h"
 
 #include "core/exposure.h"
 
+#include "test_files.h"
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace prism {
 namespace {
@@ -113,6 +118,44 @@ TEST(NumberText, ThousandsSeparators) {
   EXPECT_EQ(withSeparators(1054751), "1,054,751");
   EXPECT_EQ(withSeparators(-1234567), "-1,234,567");
   EXPECT_EQ(withSeparators(-123), "-123");
+}
+
+TEST(SceneFiles, AFoldersScenesAndFolders) {
+  test::ScratchDir dir;
+  for (const char* name : {"b.sc", "a.OBJ", "c.nff", "notes.txt", ".hidden.sc"})
+    test::writeFile(dir / name, "");
+  std::filesystem::create_directory(dir / "parts");
+  std::filesystem::create_directory(dir / ".git");
+  const std::vector<FolderEntry> entries = listSceneFolder(dir.path());
+  ASSERT_EQ(entries.size(), 4u);
+  EXPECT_EQ(entries[0].name, "parts");
+  EXPECT_TRUE(entries[0].folder);
+  EXPECT_EQ(entries[1].name, "a.OBJ");
+  EXPECT_EQ(entries[2].name, "b.sc");
+  EXPECT_EQ(entries[3].name, "c.nff");
+  EXPECT_FALSE(entries[3].folder);
+  EXPECT_TRUE(listSceneFolder(dir / "missing").empty());
+}
+
+TEST(SceneFiles, RecentScenesAreKeptNewestFirstOnceEach) {
+  test::ScratchDir dir;
+  const std::filesystem::path store = dir / "config" / "recent-scenes";
+  {
+    RecentFiles recent(store);
+    EXPECT_TRUE(recent.paths().empty());
+    for (int i = 0; i < 12; ++i)
+      recent.add(dir / ("s" + std::to_string(i) + ".sc"));
+    recent.add(dir / "s5.sc"); // again: moves to the front, not twice
+    ASSERT_EQ(recent.paths().size(), RecentFiles::kMaxRecent);
+    EXPECT_EQ(recent.paths()[0], (dir / "s5.sc").string());
+    EXPECT_EQ(recent.paths()[1], (dir / "s11.sc").string());
+    EXPECT_EQ(std::count(recent.paths().begin(), recent.paths().end(), (dir / "s5.sc").string()),
+              1);
+  }
+  // The next session finds them.
+  const RecentFiles again(store);
+  ASSERT_EQ(again.paths().size(), RecentFiles::kMaxRecent);
+  EXPECT_EQ(again.paths()[0], (dir / "s5.sc").string());
 }
 
 } // namespace

@@ -60,7 +60,7 @@ void keptEditsText(const ViewController& c) {
     dimText("Dropped your edits of what the file no longer has: " + list(kept.dropped));
 }
 
-void sceneSection(ViewController& c) {
+void sceneSection(ViewController& c, WindowState& state) {
   const std::string name = std::filesystem::path(c.scenePath()).filename().string();
   ImGui::TextWrapped("%s", name.c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.scenePath().c_str());
@@ -68,8 +68,9 @@ void sceneSection(ViewController& c) {
   dimText(withSeparators((long long)s.primitiveCount()) + " primitives, " +
           withSeparators((long long)s.lights.size()) + " lights");
   const ui::Scope scope("Scene");
-  if (ui::button("Reload (R)")) c.reload();
+  if (ui::button("Open... (Ctrl+O)")) state.open.visible = true;
   ImGui::SameLine();
+  if (ui::button("Reload (R)")) c.reload();
   ImGui::BeginDisabled(!c.canUndo());
   if (ui::button("Undo (Ctrl+Z)")) c.undo();
   ImGui::EndDisabled();
@@ -352,6 +353,7 @@ constexpr KeyHelp kKeys[] = {
     {"B", "flip between the live and the pinned render"},
     {"Esc", "close the pixel's ray tree"},
     {"R, F5", "reload the scene files"},
+    {"Ctrl+O, dropping a file on the window", "open another scene (recent ones are listed)"},
     {"O", "tint the supersampled pixels"},
     {"L", "show the lights"},
     {"E", "lock or unlock the exposure"},
@@ -394,7 +396,7 @@ void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& f
   // move the keyboard into the next text field with it.
   ImGui::PushAllowKeyboardFocus(false);
   ImGui::PushItemWidth(-110.0f * state.uiScale); // room for the labels
-  sceneSection(c);
+  sceneSection(c, state);
   // Each section's widgets sit in a scope of its own, so that no widget shares
   // an ImGui id with its section's header (the Save button did, and was dead).
   const auto section = [](const char* title, auto&& draw) {
@@ -480,6 +482,7 @@ void handleShortcuts(ViewController& c, WindowState& state) {
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   if (io.KeyCtrl) {
     if (pressed(GLFW_KEY_S)) savePicture(c, state);
+    if (pressed(GLFW_KEY_O)) state.open.visible = true;
     if (pressed(GLFW_KEY_Q)) state.quit = true;
     if (pressed(GLFW_KEY_Z) && !io.KeyShift) c.undo();
     if ((pressed(GLFW_KEY_Z) && io.KeyShift) || pressed(GLFW_KEY_Y)) c.redo();

@@ -8,6 +8,7 @@
 
 #include "frame_stats.h"
 #include "live_exposure.h"
+#include "open_dialog.h"
 #include "progress_estimate.h"
 #include "view_controller.h"
 
@@ -63,6 +64,8 @@ struct WindowState {
   CompareMode compare = CompareMode::Off;
   bool showPinned = false; // flip: the pinned render is on screen
   float split = 0.5f;      // split: where the pinned render begins, a fraction of the width
+  OpenDialog open;         // Ctrl+O
+  RecentFiles recent{RecentFiles::defaultStore()};
 };
 
 // Width of the panel in pixels at the default font (scaled by uiScale).

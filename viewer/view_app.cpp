@@ -8,7 +8,9 @@
 #include "image_view.h"
 #include "input_latch.h"
 #include "number_text.h"
+#include "open_dialog.h"
 #include "panels.h"
+#include "scene_files.h"
 #include "widgets.h"
 
 #include "core/image_io.h"
@@ -33,6 +35,7 @@
 #include <future>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 namespace prism {
 
@@ -71,6 +74,17 @@ void keepGlDriversLoaded() {
 #else
 void keepGlDriversLoaded() {}
 #endif
+
+// Files dropped on the window since the last frame (GLFW calls back on the
+// window's thread).
+std::vector<std::string> droppedFiles;
+
+void rememberDroppedFiles(GLFWwindow*, int count, const char** paths) {
+  for (int i = 0; i < count; ++i)
+    droppedFiles.emplace_back(paths[i]);
+}
+
+std::vector<std::string> takeDroppedFiles() { return std::exchange(droppedFiles, {}); }
 
 // The monitor's content scale: 2 on a screen set up for twice the usual
 // pixels per inch. Fonts, the panel and the status line grow by it.
@@ -211,6 +225,8 @@ public:
     const std::filesystem::path scene(options.scenePath);
     state_.scenePath = (scene.parent_path() / (scene.stem().string() + "-view.sc")).string();
     state_.uiScale = contentScale(window);
+    title_ = options.scenePath;
+    state_.recent.add(options.scenePath);
     if (options.script) script_.emplace(*options.script);
   }
 
@@ -232,6 +248,7 @@ private:
   ImageDisplay display_;
   ImageDisplay pinnedDisplay_;       // the render pinned for comparison
   std::uint64_t pinnedUploaded_ = 0; // the pin generation on the GPU
+  std::string title_;                // the scene the window's title names
   WindowState state_;
   std::string dumpWidgets_; // --dump-widgets FILE
   ImageDrag drag_;
@@ -280,6 +297,17 @@ void ViewApp::frame() {
   }
   state_.exposure.update(controller_->progress());
   state_.estimate.update(controller_->progress());
+  // A scene file dropped on the window opens (the first one, if several).
+  for (const std::string& path : takeDroppedFiles()) {
+    if (!isSceneFile(path)) continue;
+    openScene(*controller_, state_.recent, path);
+    break;
+  }
+  if (controller_->scenePath() != title_) { // opened another scene
+    title_ = controller_->scenePath();
+    glfwSetWindowTitle(window_, ("Prism - " + title_).c_str());
+    state_.inspected.reset();
+  }
   // An inspected pixel's ray tree follows edits of the scene.
   if (state_.inspected && state_.rayTreeRestarts != controller_->progress().restarts)
     inspect(*controller_, state_, *state_.inspected);
@@ -308,6 +336,7 @@ void ViewApp::frame() {
   if (state_.markers) drawLightMarkers(*controller_, layout);
   drawStatusLine(*controller_, state_, layout);
   drawHelp(state_, size.x, size.y);
+  drawOpenDialog(*controller_, state_.open, state_.recent, state_.uiScale, size.x, size.y);
   ImGui::Render();
   if (!dumpWidgets_.empty()) dumpWidgets();
 
@@ -488,6 +517,7 @@ std::optional<int> runViewApp(const ViewAppOptions& options, std::string& why) {
   styleImGui(contentScale(window));
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   installInputLatch(window);
+  glfwSetDropCallback(window, rememberDroppedFiles);
   ImGui_ImplOpenGL3_Init("#version 330");
 
   int code = 0;

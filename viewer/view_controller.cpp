@@ -127,8 +127,21 @@ void ViewController::reload() {
     reloadAgain_ = true;
     return;
   }
-  loading_ = std::async(std::launch::async, &ViewController::load, options_.scenePath,
-                        session_->accelKind());
+  startLoading(options_.scenePath);
+}
+
+void ViewController::open(const std::string& path) {
+  reloadAgain_ = false;
+  if (loading_.valid()) { // after the reading in flight (it cannot be interrupted)
+    openNext_ = path;
+    return;
+  }
+  opening_ = path;
+  startLoading(path);
+}
+
+void ViewController::startLoading(const std::string& path) {
+  loading_ = std::async(std::launch::async, &ViewController::load, path, session_->accelKind());
 }
 
 // The user's edits follow the scene into every state of the history: those of
@@ -159,12 +172,21 @@ void ViewController::install(LoadedScene loaded) {
   // Also for whoever runs the previewer from a terminal.
   for (const std::string& line : loaded.errors.empty() ? loaded.warnings : loaded.errors)
     std::cerr << line << "\n";
+  const std::optional<std::string> opened = std::exchange(opening_, std::nullopt);
   if (!loaded.scene) {
     sceneErrors_ = std::move(loaded.errors);
     ++failedReloads_;
     return;
   }
   sceneErrors_.clear();
+  if (opened) { // another scene: a fresh start, only the render settings stay
+    options_.scenePath = *opened;
+    UserEdits fresh;
+    fresh.settings = current().settings;
+    states_.assign(1, fresh);
+    at_ = 0;
+    keptEdits_ = {};
+  }
   sceneWarnings_ = std::move(loaded.warnings);
   Scene& scene = *loaded.scene;
   watch_.watch(scene.files); // an edit may have added or dropped an include
@@ -247,7 +269,10 @@ bool ViewController::update(Clock::time_point now) {
   }
   if (loading_.valid() && loading_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
     install(loading_.get());
-    if (reloadAgain_) {
+    if (openNext_) {
+      opening_ = std::exchange(openNext_, std::nullopt);
+      startLoading(*opening_);
+    } else if (reloadAgain_) {
       reloadAgain_ = false;
       reload();
     }

@@ -100,6 +100,12 @@ public:
   // again after they were read).
   void reload();
   bool reloading() const { return loading_.valid(); }
+  // Reads another scene (in the background, like a reload) and shows it in
+  // place of this one: a fresh start, without this scene's edits and history.
+  // The render settings stay; the image size follows the new scene's
+  // `resolution` unless --size set it. If it has errors, this scene stays and
+  // sceneErrors() says why.
+  void open(const std::string& path);
   // Saves the final picture, as `prism render` writes it (SPEC's automatic
   // exposure unless `exposure` asks for the window's).
   void save(const std::string& path, const PictureExposure& exposure = {}) {
@@ -166,6 +172,7 @@ private:
   };
 
   static LoadedScene load(const std::string& path, AccelKind accel);
+  void startLoading(const std::string& path);
   void install(LoadedScene loaded);
   UserEdits& current() { return states_[at_]; }
   void record(UserEdits next); // a new state, or the gesture's step changed
@@ -191,6 +198,8 @@ private:
   std::vector<std::string> sceneWarnings_;
   std::future<LoadedScene> loading_; // valid while a reload runs
   bool reloadAgain_ = false;
+  std::optional<std::string> opening_;  // the scene being opened in place of this one
+  std::optional<std::string> openNext_; // asked for while another reading was in flight
   int successfulReloads_ = 0;
   int failedReloads_ = 0;
   SessionImage image_;

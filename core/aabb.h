@@ -34,11 +34,12 @@ struct Aabb {
     hi += Vec3(margin);
   }
 
-  // Slab test against the parameter range; `invDir` is 1/ray.dir per component.
-  bool hit(const Ray& ray, const Vec3& invDir, Interval range) const {
+  // Slab test against the parameter range, of the box widened by `slack`
+  // (boxSlack(ray)); `invDir` is 1/ray.dir per component.
+  bool hit(const Ray& ray, const Vec3& invDir, Interval range, double slack) const {
     for (int a = 0; a < 3; ++a) {
-      double t0 = (lo[a] - ray.origin[a]) * invDir[a];
-      double t1 = (hi[a] - ray.origin[a]) * invDir[a];
+      double t0 = (lo[a] - slack - ray.origin[a]) * invDir[a];
+      double t1 = (hi[a] + slack - ray.origin[a]) * invDir[a];
       if (t0 > t1) std::swap(t0, t1);
       range.min = t0 > range.min ? t0 : range.min;
       range.max = t1 < range.max ? t1 : range.max;

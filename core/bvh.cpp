@@ -85,19 +85,35 @@ inline PrimitiveRef decodeRef(std::uint32_t code) {
   return {PrimitiveKind(code >> kKindShift), code & kIndexMask};
 }
 
+// Where the origin is taken to be when the near and the far bound of an
+// axis are tested: moved by boxSlack toward the far side for the near bound
+// and toward the near side for the far one, which widens every box by the
+// slack at no cost per node.
+struct SlackOrigin {
+  double near, far;
+};
+SlackOrigin slackOrigin(double origin, double inverseDirection, double slack) {
+  const double toward = inverseDirection < 0.0 ? -slack : slack;
+  return {origin + toward, origin - toward};
+}
+
 // One ray as the node test needs it: origin and reciprocal direction in every
 // lane, and which bound of each axis the ray meets first (the lower one when
 // travelling toward +axis).
 struct NodeRay {
-  Lanes origin[3];
+  Lanes nearOrigin[3]; // the origin for the near bounds (see slackOrigin)
+  Lanes farOrigin[3];
   Lanes inv[3];
   int nearRow[3];
   int farRow[3];
 
   explicit NodeRay(const Ray& ray) {
     const Vec3 invDir = 1.0 / ray.dir;
+    const double slack = boxSlack(ray);
     for (int a = 0; a < 3; ++a) {
-      origin[a] = broadcast(ray.origin[a]);
+      const SlackOrigin o = slackOrigin(ray.origin[a], invDir[a], slack);
+      nearOrigin[a] = broadcast(o.near);
+      farOrigin[a] = broadcast(o.far);
       inv[a] = broadcast(invDir[a]);
       nearRow[a] = 2 * a + (invDir[a] < 0.0 ? 1 : 0);
       farRow[a] = 2 * a + (invDir[a] < 0.0 ? 0 : 1);
@@ -110,8 +126,8 @@ struct NodeRay {
     Lanes tNear = broadcast(range.min);
     tFar = broadcast(range.max);
     for (int a = 0; a < 3; ++a) {
-      const Lanes t0 = (loadBounds(node.bounds[nearRow[a]]) - origin[a]) * inv[a];
-      const Lanes t1 = (loadBounds(node.bounds[farRow[a]]) - origin[a]) * inv[a];
+      const Lanes t0 = (loadBounds(node.bounds[nearRow[a]]) - nearOrigin[a]) * inv[a];
+      const Lanes t1 = (loadBounds(node.bounds[farRow[a]]) - farOrigin[a]) * inv[a];
       // Written so a NaN (0 * inf, for a ray lying in a box's face plane)
       // leaves the range unchanged: that axis does not cull.
       tNear = maxOr(t0, tNear);
@@ -344,8 +360,9 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
   // (range.min is 0 for every ray). Lanes past `count` never enter a box.
   constexpr std::size_t kSlots = kMaxBundle + 4;
   double inv[3][kSlots], rangeMax[kSlots];
-  const double* origin = &rays[0].origin[0];
-  Lanes bundleOrigin[3], invLo[3], invHi[3];
+  const double slack = boxSlack(rays[0]); // the rays share their origin
+  double nearOrigin[3], farOrigin[3];     // see slackOrigin
+  Lanes bundleNear[3], bundleFar[3], invLo[3], invHi[3];
   int nearRow[3], farRow[3];
   // How far apart the rays are at distance t: about t * spread.
   double spread = 0.0;
@@ -357,7 +374,12 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
       hi = std::max(hi, inv[a][i]);
     }
     std::fill(&inv[a][count], &inv[a][kSlots], 1.0);
-    bundleOrigin[a] = broadcast(origin[a]);
+    // Every ray of the bundle has lo's sign on this axis.
+    const SlackOrigin o = slackOrigin(rays[0].origin[a], lo, slack);
+    nearOrigin[a] = o.near;
+    farOrigin[a] = o.far;
+    bundleNear[a] = broadcast(o.near);
+    bundleFar[a] = broadcast(o.far);
     invLo[a] = broadcast(lo);
     invHi[a] = broadcast(hi);
     nearRow[a] = 2 * a + (lo < 0.0 ? 1 : 0); // every ray has the sign of lo
@@ -375,8 +397,8 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
   auto raysEntering = [&](const Node& node, int c, std::uint64_t active) {
     double toNear[3], toFar[3];
     for (int a = 0; a < 3; ++a) {
-      toNear[a] = double(node.bounds[nearRow[a]][c]) - origin[a];
-      toFar[a] = double(node.bounds[farRow[a]][c]) - origin[a];
+      toNear[a] = double(node.bounds[nearRow[a]][c]) - nearOrigin[a];
+      toFar[a] = double(node.bounds[farRow[a]][c]) - farOrigin[a];
     }
     std::uint64_t entering = 0;
     for (std::size_t i = 0; i < count; i += 4) {
@@ -404,8 +426,8 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
       const Node& node = nodes_[current.ref];
       Lanes tNear = broadcast(0.0), tFar = broadcast(bundleMax);
       for (int a = 0; a < 3; ++a) {
-        const Lanes toNear = loadBounds(node.bounds[nearRow[a]]) - bundleOrigin[a];
-        const Lanes toFar = loadBounds(node.bounds[farRow[a]]) - bundleOrigin[a];
+        const Lanes toNear = loadBounds(node.bounds[nearRow[a]]) - bundleNear[a];
+        const Lanes toFar = loadBounds(node.bounds[farRow[a]]) - bundleFar[a];
         tNear = maxOr(minOr(toNear * invLo[a], toNear * invHi[a]), tNear);
         tFar = minOr(maxOr(toFar * invLo[a], toFar * invHi[a]), tFar);
       }
@@ -466,8 +488,8 @@ bool walksTogether(std::span<const Ray> rays) {
       // subnormal d, possibly fine, goes ray by ray too). A non-finite origin
       // goes ray by ray, where it hits nothing.
       const double d = std::abs(ray.dir[a]);
-      if (!sameOrigin || !sameSign || !(d >= std::numeric_limits<double>::min()) ||
-          std::isinf(d) || !std::isfinite(ray.origin[a]))
+      if (!sameOrigin || !sameSign || !(d >= std::numeric_limits<double>::min()) || std::isinf(d) ||
+          !std::isfinite(ray.origin[a]))
         return false;
     }
   }

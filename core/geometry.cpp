@@ -116,9 +116,20 @@ Aabb boundsOf(const Sphere& s) {
 }
 
 Aabb boundsOf(const Polygon& p, const Vec3* vertices) {
+  // A polygon is hit on its plane, where the hit's projection (the dropped
+  // axis left out) lies inside the vertices' projection. Its vertices may be
+  // a little off that plane (the readers accept 1e-3 of the polygon's size),
+  // so the box holds each vertex and also the point of the plane over it
+  // along the dropped axis: hits lie between those, and a hierarchy never
+  // culls a polygon its own test would hit.
+  const int w = p.dropAxis;
   Aabb box;
-  for (std::uint32_t i = 0; i < p.vertexCount; ++i)
-    box.extend(vertices[p.firstVertex + i]);
+  for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
+    Vec3 v = vertices[p.firstVertex + i];
+    box.extend(v);
+    v[w] += (p.planeOffset - glm::dot(p.normal, v)) / p.normal[w];
+    box.extend(v);
+  }
   return box;
 }
 

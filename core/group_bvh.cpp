@@ -135,6 +135,7 @@ template <bool AnyHit>
 bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   if (!isFinite(ray)) return false;
   const Vec3 invDir = 1.0 / ray.dir;
+  const double slack = boxSlack(ray);
   std::uint32_t local[kLocalStack];
   std::vector<std::uint32_t> heap; // only for pathologically deep nesting
   std::uint32_t* stack = local;
@@ -147,7 +148,7 @@ bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip
   bool found = false;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!node.box.hit(ray, invDir, range)) continue;
+    if (!node.box.hit(ray, invDir, range, slack)) continue;
     for (std::uint32_t i = 0; i < node.primCount; ++i) {
       const PrimitiveRef& ref = prims_[node.primBegin + i];
       if (skip != nullptr && ref == *skip) continue;

@@ -17,6 +17,15 @@ struct Ray {
 // every box, unused child slots included, and never finish.
 inline bool isFinite(const Ray& ray) { return isFinite(ray.origin) && isFinite(ray.dir); }
 
+// How far a hierarchy widens every box for `ray` (in space, on each side).
+// Primitive tests compute relative to the ray's origin, and with a far origin
+// (a ray that starts 1e16 away from a unit sphere) their rounding, a few
+// ulps of the origin's coordinates, can exceed a box's size and padding: the
+// box test would cull a primitive that its own test hits. 2^-46 of the
+// largest origin coordinate (64 of its ulps) keeps every box test
+// conservative; for ordinary scenes it is far below any modelled detail.
+inline double boxSlack(const Ray& ray) { return 0x1p-46 * maxAbsComponent(ray.origin); }
+
 // What a traced ray is for; statistics and the --pixel ray tree are kept by kind.
 enum class RayKind { Eye, Shadow, Reflected, Transmitted };
 

@@ -469,6 +469,66 @@ TEST(Accel, DegenerateInputs) {
   }
 }
 
+// Rays that start 1e15 to 4e16 away from a unit sphere (as a ray reflected
+// inside a sphere of radius 4e16 does): the sphere's test, relative to its
+// centre, may hit where the box test, rounding bound - origin at that
+// distance, missed the box. Found by fuzzing; boxes are widened by boxSlack.
+TEST(Accel, RaysFromFarAwayAgreeWithBruteForce) {
+  Scene scene;
+  const std::uint32_t mat = addMaterial(scene, Material{});
+  addSphere(scene, Vec3(0.0), 1.0, mat);
+  addSphere(scene, Vec3(3, 0, 0), 1.0, mat);
+  addSphere(scene, Vec3(0, 3, 0), 0.5, mat);
+  addPolygon(scene, {{-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}}, mat);
+  for (int i = 0; i < 40; ++i)
+    addSphere(scene, Vec3(1e3 * i, 0, 0), 0.25, mat); // an inner node or two
+  const auto accels = accelerated(scene);
+  const auto brute = makeAccel(scene, AccelKind::None);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.5, 1.5), scale(15.0, 16.7);
+  Tally tally;
+  for (int i = 0; i < 4000; ++i) {
+    const Vec3 from = randomUnit(rng) * std::pow(10.0, scale(rng));
+    const Vec3 target(u(rng), u(rng), u(rng));
+    expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(target - from)}, Interval{},
+                  nullptr, tally);
+  }
+  EXPECT_GT(tally.hits, 500);
+}
+
+// A polygon whose vertices lie a little off its plane (the readers accept
+// 1e-3 of its size) is hit on the plane, which may pass outside the box of
+// the vertices: that box culled hits the polygon's own test finds.
+TEST(Accel, SlightlyNonPlanarPolygonsAreNeverCulled) {
+  Scene scene;
+  const std::uint32_t mat = addMaterial(scene, Material{});
+  // A tall thin quad, one vertex 0.9e-3 of the size off the others' plane.
+  addPolygon(scene, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0.0018 * 2.83}, {-1, 1, 0}}, mat);
+  for (int i = 0; i < 40; ++i)
+    addSphere(scene, Vec3(10.0 + i, 0, 0), 0.25, mat);
+  const auto accels = accelerated(scene);
+  const auto brute = makeAccel(scene, AccelKind::None);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Tally tally;
+  for (int i = 0; i < 4000; ++i) {
+    const Vec3 target(u(rng), u(rng), 0.0);
+    const Vec3 from = target + 4.0 * randomUnit(rng);
+    expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(target - from)}, Interval{},
+                  nullptr, tally);
+  }
+  // Near (-1, -1) the plane dips below z = 0, the vertices' lowest: rays
+  // running level just below it never enter the vertices' box, yet hit.
+  std::uniform_real_distribution<double> y(-1.0, -0.5), z(-1e-3, -1e-4);
+  const int before = tally.hits;
+  for (int i = 0; i < 2000; ++i) {
+    expectSameHit(scene, accels, *brute, Ray{Vec3(-3.0, y(rng), z(rng)), Vec3(1, 0, 0)}, Interval{},
+                  nullptr, tally);
+  }
+  EXPECT_GT(tally.hits - before, 200);
+  EXPECT_GT(tally.hits, 1000);
+}
+
 TEST(SahBuilder, EveryBoxInExactlyOneLeafInsideItsAncestors) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);

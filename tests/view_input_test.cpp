@@ -23,7 +23,9 @@
 #include <functional>
 #include <iostream>
 #include <optional>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <thread>
 
 namespace prism::test {
@@ -466,6 +468,59 @@ TEST_F(ViewInput, OpenAnotherScene) {
   // Back to the first scene from the recent list.
   ASSERT_TRUE(app_.click("Open/recent/" + (app_.dir() / "a.sc").string()));
   EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Lights/light 3/light 3").has_value(); }));
+}
+
+// The controls docs/previewer.md lists are the window's: every documented
+// label is a widget, and every widget (but text fields, section headers and
+// the Open dialog's list of files) is documented. With the key help, the
+// Open dialog, a pinned render in split view and an inspected pixel on
+// screen, every control is there at once.
+TEST_F(ViewInput, TheDocumentedControlsAreTheWindows) {
+  ASSERT_TRUE(xdotool(x_.display(), "mousemove 100 380 click 1"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Pixel/Close").has_value(); }));
+  ASSERT_TRUE(app_.click("View/Pin this render (P)"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("View/split").has_value(); }));
+  ASSERT_TRUE(app_.click("View/split"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("View/split at").has_value(); }));
+  ASSERT_TRUE(app_.click("View/flip (B)"));
+  ASSERT_TRUE(
+      app_.waitFor([&] { return app_.widget("View/show the pinned render (B)").has_value(); }));
+  ASSERT_TRUE(app_.tap("F1"));
+  ASSERT_TRUE(app_.tap("ctrl+o"));
+  ASSERT_TRUE(app_.waitFor([&] {
+    return app_.widget("Help/Close (F1)").has_value() && app_.widget("Open/Cancel").has_value();
+  }));
+  std::set<std::string> shown;
+  const std::regex numberedLight("light [0-9]+");
+  for (const json& w : app_.widgets()) {
+    const std::string name = w["name"], kind = w["kind"];
+    if (kind == "header" || kind == "input" || name.starts_with("Open/recent/") ||
+        name.starts_with("Open/folder/"))
+      continue;
+    shown.insert(std::regex_replace(w["label"].get<std::string>(), numberedLight, "light N"));
+  }
+  // Split mode hides flip's checkbox; the help shows it under flip (both listed).
+  shown.insert("split at");
+  shown.insert("show the pinned render (B)");
+  // The labels in the second column of the Controls table, each in backticks.
+  const std::string doc = slurp(fs::path(PRISM_SOURCE_DIR) / "docs" / "previewer.md");
+  const std::size_t start = doc.find("## Controls"), end = doc.find("\n## ", start + 1);
+  ASSERT_NE(start, std::string::npos);
+  std::set<std::string> documented;
+  std::istringstream table(doc.substr(start, end - start));
+  const std::regex label("`([^`]+)`");
+  for (std::string row; std::getline(table, row);) {
+    if (row.rfind("| ", 0) != 0) continue;
+    const std::size_t first = row.find(" | "), second = row.find(" | ", first + 3);
+    if (first == std::string::npos || second == std::string::npos) continue;
+    const std::string cell = row.substr(first + 3, second - first - 3);
+    for (std::sregex_iterator it(cell.begin(), cell.end(), label), none; it != none; ++it)
+      documented.insert((*it)[1]);
+  }
+  for (const std::string& l : shown)
+    EXPECT_TRUE(documented.count(l)) << "not documented in docs/previewer.md: " << l;
+  for (const std::string& l : documented)
+    EXPECT_TRUE(shown.count(l)) << "documented but not in the window: " << l;
 }
 
 // No two widgets share an ImGui id (the dump refuses to be written then), and

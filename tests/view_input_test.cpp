@@ -540,6 +540,24 @@ TEST_F(ViewInput, EveryWidgetHasAPlaceAndAUniqueName) {
   }
 }
 
+// On a screen set up for twice the usual pixels per inch (Xft.dpi 192, which
+// GLFW reports as a content scale of 2) the panel's widgets are twice as
+// large: text stays readable and the mouse still finds them.
+TEST(ViewScale, HighDpiScreensGetAScaledPanel) {
+  XServer x;
+  ASSERT_FALSE(x.display().empty());
+  ASSERT_EQ(std::system(("echo 'Xft.dpi: 192' | DISPLAY=" + x.display() + " xrdb -merge").c_str()),
+            0);
+  ScratchDir dir;
+  Previewer app(x, dir);
+  ASSERT_TRUE(app.ready()) << app.stderrText();
+  const std::optional<json> reload = app.widget("Scene/Reload (R)");
+  ASSERT_TRUE(reload.has_value());
+  EXPECT_GE((*reload)["h"].get<double>(), 34.0); // 19 at the usual scale
+  ASSERT_TRUE(app.click("Render/jitter sub-samples", 0.05));
+  EXPECT_TRUE(app.waitForValue("Render/jitter sub-samples", "true"));
+}
+
 // The window opens before the scene is read: here the scene file is a pipe
 // that the test fills only once the window is there and stderr has said
 // what the previewer is waiting for (forest.sc, 10^6 primitives, left its

@@ -141,7 +141,11 @@ void styleImGui(float scale) {
   style.Colors[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.11f, 0.125f, 1.0f);
   style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.52f, 0.90f, 1.0f); // progress bars
   style.ScaleAllSizes(scale);
-  ImGui::GetIO().FontGlobalScale = scale;
+  // The default font drawn at the scaled size (crisp), not its 13-pixel
+  // bitmap magnified.
+  ImFontConfig font;
+  font.SizePixels = 13.0f * scale;
+  ImGui::GetIO().Fonts->AddFontDefault(&font);
 }
 
 // What the loading screen and stderr say about a stage that has lasted a while.

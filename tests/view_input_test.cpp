@@ -470,6 +470,58 @@ TEST_F(ViewInput, OpenAnotherScene) {
   EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Lights/light 3/light 3").has_value(); }));
 }
 
+// The remaining controls, each by mouse, each with its effect.
+TEST_F(ViewInput, EveryOtherControlByMouse) {
+  const auto changesOnClick = [&](const std::string& name, double fx) {
+    const std::string before = app_.value(name);
+    EXPECT_TRUE(app_.click(name, fx)) << name;
+    EXPECT_TRUE(app_.waitFor([&] { return app_.value(name) != before; })) << name;
+  };
+  changesOnClick("Render/threshold", 0.9);
+  changesOnClick("Camera/fov", 0.8);
+  const auto changesOnDrag = [&](const std::string& name) {
+    const std::string before = app_.value(name);
+    const auto [x, y] = app_.at(name, 0.16);
+    EXPECT_TRUE(app_.drag(x, y, 70, 0)) << name;
+    EXPECT_TRUE(app_.waitFor([&] { return app_.value(name) != before; })) << name;
+  };
+  changesOnDrag("Lights/ambient");
+  changesOnDrag("Lights/light 2/intensity");
+  changesOnDrag("Camera/lookat");
+  // The pixel's ray tree closes by its button, the key help by its own.
+  ASSERT_TRUE(xdotool(x_.display(), "mousemove 100 380 click 1"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Pixel/Close").has_value(); }));
+  ASSERT_TRUE(app_.click("Pixel/Close"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Pixel/Close").has_value(); }));
+  ASSERT_TRUE(app_.tap("F1"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Help/Close (F1)").has_value(); }));
+  ASSERT_TRUE(app_.click("Help/Close (F1)"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Help/Close (F1)").has_value(); }));
+  // Split view's slider.
+  ASSERT_TRUE(app_.click("View/Pin this render (P)"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("View/split").has_value(); }));
+  ASSERT_TRUE(app_.click("View/split"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("View/split at").has_value(); }));
+  changesOnClick("View/split at", 0.2);
+  ASSERT_TRUE(app_.click("View/off"));
+  EXPECT_TRUE(app_.waitForValue("View/off", "true"));
+  // The Open dialog: Cancel closes it; a typed path and Open opens it.
+  ASSERT_TRUE(app_.click("Scene/Open... (Ctrl+O)"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Open/Cancel").has_value(); }));
+  ASSERT_TRUE(app_.click("Open/Cancel"));
+  EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Open/Cancel").has_value(); }));
+  writeFile(app_.dir() / "third.sc", sceneText(3));
+  ASSERT_TRUE(app_.tap("ctrl+o"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Open/path").has_value(); }));
+  ASSERT_TRUE(app_.click("Open/path"));
+  ASSERT_TRUE(app_.waitFor([&] { return app_.active("Open/path"); }));
+  ASSERT_TRUE(
+      xdotool(x_.display(), "type --delay 20 '" + (app_.dir() / "third.sc").string() + "'"));
+  ASSERT_TRUE(app_.waitForValue("Open/path", (app_.dir() / "third.sc").string()));
+  ASSERT_TRUE(app_.click("Open/Open"));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 3/light 3").has_value(); }));
+}
+
 // The controls docs/previewer.md lists are the window's: every documented
 // label is a widget, and every widget (but text fields, section headers and
 // the Open dialog's list of files) is documented. With the key help, the

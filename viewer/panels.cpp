@@ -423,13 +423,18 @@ void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& f
 
 void drawHelp(WindowState& state, float width, float height) {
   if (!state.showHelp) return;
+  // Within the window whatever its size: the list scrolls, the button stays.
   const float w = std::min(width - 40.0f, 560.0f * state.uiScale);
   ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always,
                           ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(w, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(w, std::min(height - 40.0f, 480.0f * state.uiScale)));
   ImGui::Begin("Keys and mouse (F1)", &state.showHelp,
-               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_AlwaysAutoResize);
+               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  {
+    const ui::Scope scope("Help");
+    if (ui::button("Close (F1)")) state.showHelp = false;
+  }
+  ImGui::BeginChild("keys");
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingStretchProp)) {
     for (const KeyHelp& k : kKeys) {
       ImGui::TableNextColumn();
@@ -439,10 +444,7 @@ void drawHelp(WindowState& state, float width, float height) {
     }
     ImGui::EndTable();
   }
-  {
-    const ui::Scope scope("Help");
-    if (ui::button("Close (F1)")) state.showHelp = false;
-  }
+  ImGui::EndChild();
   ImGui::End();
 }
 

@@ -335,6 +335,17 @@ TEST_F(ViewInput, ShortKeyTapsAllCount) {
   writeFile(app_.dir() / "a.sc", sceneText(2));
   ASSERT_TRUE(app_.tap("F5"));
   EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 2/light 2").has_value(); }));
+  // With errors in the files, Ctrl+S saves the last good scene, and says so.
+  writeFile(app_.dir() / "a.sc", "sphere 0 0 0 -1\n");
+  ASSERT_TRUE(app_.tap("r"));
+  ASSERT_TRUE(app_.waitFor(
+      [&] { return app_.stderrText().find("a.sc:1:14: error") != std::string::npos; }));
+  ASSERT_TRUE(app_.tap("ctrl+s"));
+  EXPECT_TRUE(app_.waitFor([&] {
+    return app_.stderrText().find("the scene files have errors: saving the last good scene") !=
+           std::string::npos;
+  })) << app_.stderrText();
+  fs::remove(app_.dir() / "saved.tiff");
   // Ctrl+S saves, Ctrl+Q quits, both as quick taps.
   ASSERT_TRUE(app_.tap("ctrl+s"));
   EXPECT_TRUE(app_.waitFor([&] { return fs::exists(app_.dir() / "saved.tiff"); }));

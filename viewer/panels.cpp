@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 
 namespace prism {
 
@@ -475,6 +476,7 @@ void savePicture(ViewController& c, WindowState& state) {
   c.save(state.savePath, exposure);
   state.note =
       c.sceneErrors().empty() ? "" : "the scene files have errors: saving the last good scene";
+  if (!state.note.empty()) std::cerr << "prism: " << state.note << "\n"; // for a terminal too
 }
 
 void handleShortcuts(ViewController& c, WindowState& state) {

@@ -80,6 +80,32 @@ quit
   EXPECT_EQ(a[23].line, 25);
 }
 
+TEST(ViewScript, ParsesTheInspectionAndComparisonActions) {
+  const auto a = parseScript("exposure lock\nev -1.5\nexposure auto\npicture fit\npicture 400\n"
+                             "inspect 12 34\npin\ncompare split 0.25\ncompare flip\n"
+                             "compare off\n",
+                             "s.txt");
+  ASSERT_EQ(a.size(), 10u);
+  EXPECT_EQ(a[0].op, ScriptOp::Exposure);
+  EXPECT_EQ(a[0].values, std::vector<double>({1.0}));
+  EXPECT_EQ(a[1].values, std::vector<double>({-1.5}));
+  EXPECT_EQ(a[2].values, std::vector<double>({0.0}));
+  EXPECT_EQ(a[3].values, std::vector<double>({0.0})); // fit
+  EXPECT_EQ(a[4].values, std::vector<double>({400.0}));
+  EXPECT_EQ(a[5].values, std::vector<double>({12.0, 34.0}));
+  EXPECT_EQ(a[6].op, ScriptOp::Pin);
+  EXPECT_EQ(a[7].index, 2);
+  EXPECT_EQ(a[7].values, std::vector<double>({0.25}));
+  EXPECT_EQ(a[8].index, 1);
+  EXPECT_EQ(a[9].index, 0);
+  const auto errors = errorsOf("exposure maybe\nev 9\npicture 1\ninspect -1 2\ncompare sideways\n"
+                               "pin now\n");
+  ASSERT_EQ(errors.size(), 6u);
+  EXPECT_EQ(errors[0].format(), "s.txt:1:10: error: exposure: expected auto or lock, got 'maybe'");
+  EXPECT_EQ(errors[4].format(),
+            "s.txt:5:9: error: compare: expected off, flip or split, got 'sideways'");
+}
+
 TEST(ViewScript, ReportsEveryBadLineWithItsPosition) {
   const auto errors = errorsOf("wait pass1\n"
                                "  jump 3\n"

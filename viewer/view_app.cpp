@@ -339,6 +339,14 @@ void ViewApp::frame() {
                    layout.zoom);
   if (state_.markers) drawLightMarkers(*controller_, layout);
   drawStatusLine(*controller_, state_, layout);
+  if (state_.compare == CompareMode::Split && state_.pinned.valid) {
+    // Where the pinned render begins, over the picture.
+    const float x = layout.left + state_.split * float(display_.width()) * layout.zoom;
+    ImGui::GetBackgroundDrawList()->AddLine(
+        ImVec2(x, std::max(layout.top, 0.0f)),
+        ImVec2(x, std::min(layout.top + float(display_.height()) * layout.zoom, layout.areaHeight)),
+        IM_COL32(255, 255, 255, 200), 1.5f * state_.uiScale);
+  }
   drawHelp(state_, size.x, size.y);
   drawOpenDialog(*controller_, state_.open, state_.recent, state_.uiScale, size.x, size.y);
   ImGui::Render();
@@ -453,6 +461,27 @@ void ViewApp::start(const ScriptAction& a) {
   case ScriptOp::Reset: controller_->resetCamera(); break;
   case ScriptOp::Overlay: state_.overlay = a.values[0] != 0.0; break;
   case ScriptOp::Markers: state_.markers = a.values[0] != 0.0; break;
+  case ScriptOp::Exposure: state_.exposure.setLocked(a.values[0] != 0.0); break;
+  case ScriptOp::Ev: state_.exposure.setEv(a.values[0]); break;
+  case ScriptOp::Picture:
+    state_.picture.fit = a.values[0] == 0.0;
+    state_.picture.zoom = float(a.values[0] / 100.0);
+    break;
+  case ScriptOp::Inspect: {
+    const RenderSettings s = controller_->settings();
+    const glm::ivec2 pixel(int(a.values[0]), int(a.values[1]));
+    if (pixel.x >= s.width || pixel.y >= s.height)
+      throw std::runtime_error("there is no pixel (" + std::to_string(pixel.x) + ", " +
+                               std::to_string(pixel.y) + ") in the image");
+    inspect(*controller_, state_, pixel);
+    break;
+  }
+  case ScriptOp::Pin: pinRender(*controller_, state_); break;
+  case ScriptOp::Compare:
+    state_.compare = CompareMode(a.index);
+    state_.showPinned = a.index == 1;
+    state_.split = float(a.values[0]);
+    break;
   case ScriptOp::Reload: controller_->reload(); break;
   case ScriptOp::Save: controller_->save(a.path); break;
   case ScriptOp::Screenshot:

@@ -120,6 +120,12 @@ const std::map<std::string, ScriptOp>& keywords() {
       {"reset", ScriptOp::Reset},
       {"overlay", ScriptOp::Overlay},
       {"markers", ScriptOp::Markers},
+      {"exposure", ScriptOp::Exposure},
+      {"ev", ScriptOp::Ev},
+      {"picture", ScriptOp::Picture},
+      {"inspect", ScriptOp::Inspect},
+      {"pin", ScriptOp::Pin},
+      {"compare", ScriptOp::Compare},
       {"reload", ScriptOp::Reload},
       {"save", ScriptOp::Save},
       {"screenshot", ScriptOp::Screenshot},
@@ -199,8 +205,42 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     a.path = restOfLine(line, t[0]);
     return;
   case ScriptOp::Echo: a.path = restOfLine(line, t[0]); return;
+  case ScriptOp::Exposure:
+    if (!p.arity(t, 1, "auto or lock")) return;
+    if (t[1].text != "auto" && t[1].text != "lock")
+      p.error(t[1], "exposure: expected auto or lock, got '" + t[1].text + "'");
+    a.values.push_back(t[1].text == "lock" ? 1.0 : 0.0);
+    return;
+  case ScriptOp::Ev:
+    if (p.arity(t, 1, "STOPS")) a.values.push_back(p.number(t[1], "ev", -5.0, 5.0));
+    return;
+  case ScriptOp::Picture:
+    if (!p.arity(t, 1, "fit or PERCENT")) return;
+    a.values.push_back(t[1].text == "fit" ? 0.0 : p.number(t[1], "picture", 6.25, 6400.0));
+    return;
+  case ScriptOp::Inspect:
+    if (!p.arity(t, 2, "X Y")) return;
+    a.values.push_back(p.integer(t[1], "inspect", 0, 1 << 20));
+    a.values.push_back(p.integer(t[2], "inspect", 0, 1 << 20));
+    return;
+  case ScriptOp::Compare:
+    if (t.size() < 2 || t.size() > 3) {
+      p.error(t[0], "compare: expected off, flip or split [FRACTION]");
+      return;
+    }
+    if (t[1].text == "off")
+      a.index = 0;
+    else if (t[1].text == "flip")
+      a.index = 1;
+    else if (t[1].text == "split")
+      a.index = 2;
+    else
+      p.error(t[1], "compare: expected off, flip or split, got '" + t[1].text + "'");
+    a.values.push_back(t.size() == 3 ? p.number(t[2], "compare", 0.0, 1.0) : 0.5);
+    return;
   case ScriptOp::Reset:
   case ScriptOp::Reload:
+  case ScriptOp::Pin:
   case ScriptOp::Quit: p.arity(t, 0, "no arguments"); return;
   }
 }

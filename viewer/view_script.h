@@ -14,6 +14,11 @@
 //   intensity N R G B        set light N's intensity
 //   orbit YAW PITCH          degrees;  pan DX DY (pixels);  zoom FACTOR;  reset
 //   overlay on|off | markers on|off
+//   exposure auto|lock       unlock / lock the exposure;  ev STOPS  its offset
+//   picture fit|PERCENT      the picture's zoom (the camera stays)
+//   inspect X Y              show pixel (X, Y)'s ray tree, as a click does
+//   pin                      pin the render for comparison
+//   compare off|flip|split [FRACTION]  how the pinned render is shown
 //   reload                   re-read the scene files now
 //   save PATH                the final picture, as the Save button (waits for it)
 //   screenshot PATH          the window's own pixels after the next frame is drawn
@@ -48,6 +53,12 @@ enum class ScriptOp {
   Reset,
   Overlay,
   Markers,
+  Exposure,
+  Ev,
+  Picture,
+  Inspect,
+  Pin,
+  Compare,
   Reload,
   Save,
   Screenshot,

@@ -16,6 +16,7 @@ packages=(
   libosmesa6-dev                    # the display test draws offscreen through OSMesa
   xvfb xauth                        # the window tests start their own X server (xvfb-run)
   xdotool                           # ... and drive the window with real mouse and key events
+  libx11-dev                        # ... and drop files on it (tests/xdnd_source.cpp)
   x11-xserver-utils                 # xrdb: a HiDPI screen (Xft.dpi) for the scaling test
   # fuzzing the readers (.ci/fuzz.sh): clang with libFuzzer's runtime (only a
   # Recommends of clang-14) and llvm-symbolizer for readable stack traces

@@ -6,6 +6,7 @@
 // fixed sleep). Scripted sessions (view_e2e_test) bypass ImGui's input
 // handling, which is how a dead Save button and lost key taps went unseen.
 #include "test_files.h"
+#include "xdnd_source.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -103,7 +104,9 @@ private:
 
 // xdotool on the test's display; false if it failed.
 bool xdotool(const std::string& display, const std::string& args) {
-  return std::system(("DISPLAY=" + display + " xdotool " + args).c_str()) == 0;
+  // Bounded, so that a `search --sync` that never matches fails the test
+  // instead of hanging it.
+  return std::system(("DISPLAY=" + display + " timeout 30 xdotool " + args).c_str()) == 0;
 }
 
 // The ImageDescription a picture file holds.
@@ -479,6 +482,19 @@ TEST_F(ViewInput, OpenAnotherScene) {
   // Back to the first scene from the recent list.
   ASSERT_TRUE(app_.click("Open/recent/" + (app_.dir() / "a.sc").string()));
   EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Lights/light 3/light 3").has_value(); }));
+}
+
+// A scene file dropped on the window (as from a file manager, by the XDND
+// protocol) opens; of several files, the first scene file does.
+TEST_F(ViewInput, DroppingASceneFileOpensIt) {
+  writeFile(app_.dir() / "notes.txt", "not a scene");
+  writeFile(app_.dir() / "dropped scene.sc", sceneText(3));
+  ASSERT_TRUE(dropFiles(x_.display(), {app_.dir() / "notes.txt", app_.dir() / "dropped scene.sc"},
+                        100, 380));
+  EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 3/light 3").has_value(); }))
+      << app_.stderrText();
+  EXPECT_TRUE(
+      xdotool(x_.display(), "search --sync --name 'Prism - .*dropped scene.sc' >/dev/null"));
 }
 
 // The remaining controls, each by mouse, each with its effect.

@@ -169,6 +169,11 @@ public:
     const std::optional<json> w = widget(name);
     return w && (*w)["active"].get<bool>();
   }
+  bool anyActive() const {
+    for (const json& w : widgets())
+      if (w.value("active", false)) return true;
+    return false;
+  }
   std::string value(const std::string& name) const {
     const std::optional<json> w = widget(name);
     return w ? (*w)["value"].get<std::string>() : "(no such widget)";
@@ -223,14 +228,23 @@ public:
     return xdotool(display_, "keydown " + keys + " sleep 0.01 keyup " + keys);
   }
   // Presses at (x, y), moves by (dx, dy) in steps, releases: a drag.
-  bool drag(int x, int y, int dx, int dy, int button = 1) const {
+  // Presses `button` at (x, y), moves by (dx, dy), and releases it only once
+  // `moved()` holds (or after 20 s): a loaded machine may render a frame
+  // slower than the events arrive, and a release seen in the same frame as
+  // the last move would lose the drag. Returns whether `moved()` held.
+  bool drag(int x, int y, int dx, int dy, const std::function<bool()>& moved,
+            int button = 1) const {
     std::string steps;
     for (int i = 1; i <= 5; ++i)
       steps += " mousemove " + std::to_string(x + dx * i / 5) + " " +
                std::to_string(y + dy * i / 5) + " sleep 0.03";
-    return xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
-                                 " mousedown " + std::to_string(button) + " sleep 0.05" + steps +
-                                 " mouseup " + std::to_string(button));
+    const std::string b = std::to_string(button);
+    const bool pressed =
+        xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
+                              " mousedown " + b + " sleep 0.05" + steps);
+    const bool done = pressed && waitFor(moved);
+    // A dragged widget is released in a later frame: its value is final then.
+    return xdotool(display_, "mouseup " + b) && done && waitFor([&] { return !anyActive(); });
   }
   // Waits for the program to end by itself.
   bool exits(double seconds) {
@@ -303,8 +317,7 @@ TEST_F(ViewInput, ButtonsAndCheckboxesWorkByMouse) {
   // Reset camera: an edited eye goes back to the file's.
   const std::string eye = app_.value("Camera/eye");
   const auto [x, y] = app_.at("Camera/eye", 0.16);
-  ASSERT_TRUE(app_.drag(x, y, 60, 0));
-  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != eye; }));
+  ASSERT_TRUE(app_.drag(x, y, 60, 0, [&] { return app_.value("Camera/eye") != eye; }));
   ASSERT_TRUE(app_.click("Camera/Reset camera (Home)"));
   EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
 }
@@ -364,19 +377,18 @@ TEST_F(ViewInput, DragsSlidersAndThePicture) {
   EXPECT_TRUE(app_.waitFor([&] { return app_.value("Render/max depth") != "5"; }));
   const std::string light = app_.value("Lights/light 1/light 1");
   const auto [lx, ly] = app_.at("Lights/light 1/light 1", 0.16);
-  ASSERT_TRUE(app_.drag(lx, ly, 80, 0));
-  EXPECT_TRUE(app_.waitFor([&] { return app_.value("Lights/light 1/light 1") != light; }));
+  EXPECT_TRUE(
+      app_.drag(lx, ly, 80, 0, [&] { return app_.value("Lights/light 1/light 1") != light; }));
   // Orbit: a drag on the picture moves the eye, not lookat.
   const std::string eye = app_.value("Camera/eye"), lookat = app_.value("Camera/lookat");
-  ASSERT_TRUE(app_.drag(160, 120, 60, 20));
-  EXPECT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != eye; }));
+  EXPECT_TRUE(app_.drag(160, 120, 60, 20, [&] { return app_.value("Camera/eye") != eye; }));
   EXPECT_EQ(app_.value("Camera/lookat"), lookat);
   // Pan: a right drag moves both.
   const std::string orbited = app_.value("Camera/eye");
-  ASSERT_TRUE(app_.drag(160, 120, 30, 30, 3));
-  EXPECT_TRUE(app_.waitFor([&] {
-    return app_.value("Camera/eye") != orbited && app_.value("Camera/lookat") != lookat;
-  }));
+  EXPECT_TRUE(app_.drag(
+      160, 120, 30, 30,
+      [&] { return app_.value("Camera/eye") != orbited && app_.value("Camera/lookat") != lookat; },
+      3));
   // Wheel: the eye moves toward lookat.
   const std::string panned = app_.value("Camera/eye");
   ASSERT_TRUE(xdotool(x_.display(), "mousemove 160 120 click 4"));
@@ -392,8 +404,8 @@ TEST_F(ViewInput, DragsSlidersAndThePicture) {
 TEST_F(ViewInput, UndoRedoAndResets) {
   const std::string light = app_.value("Lights/light 1/light 1");
   const auto [lx, ly] = app_.at("Lights/light 1/light 1", 0.16);
-  ASSERT_TRUE(app_.drag(lx, ly, 80, 0));
-  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Lights/light 1/light 1") != light; }));
+  ASSERT_TRUE(
+      app_.drag(lx, ly, 80, 0, [&] { return app_.value("Lights/light 1/light 1") != light; }));
   const std::string moved = app_.value("Lights/light 1/light 1");
   ASSERT_TRUE(app_.tap("ctrl+z")); // the whole drag, in one step
   EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", light));
@@ -407,8 +419,7 @@ TEST_F(ViewInput, UndoRedoAndResets) {
   EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", light));
   // The file's values: every edit of the scene goes (and can come back).
   const std::string eye = app_.value("Camera/eye");
-  ASSERT_TRUE(app_.drag(160, 120, 60, 20));
-  ASSERT_TRUE(app_.waitFor([&] { return app_.value("Camera/eye") != eye; }));
+  ASSERT_TRUE(app_.drag(160, 120, 60, 20, [&] { return app_.value("Camera/eye") != eye; }));
   ASSERT_TRUE(app_.click("Scene/Back to the file's values"));
   EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
 }
@@ -509,8 +520,7 @@ TEST_F(ViewInput, EveryOtherControlByMouse) {
   const auto changesOnDrag = [&](const std::string& name) {
     const std::string before = app_.value(name);
     const auto [x, y] = app_.at(name, 0.16);
-    EXPECT_TRUE(app_.drag(x, y, 70, 0)) << name;
-    EXPECT_TRUE(app_.waitFor([&] { return app_.value(name) != before; })) << name;
+    EXPECT_TRUE(app_.drag(x, y, 70, 0, [&] { return app_.value(name) != before; })) << name;
   };
   changesOnDrag("Lights/ambient");
   changesOnDrag("Lights/light 2/intensity");

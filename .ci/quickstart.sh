@@ -7,4 +7,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/.ci/install-deps.sh"
 bash "$root/.ci/build.sh" "$root/build" -DPRISM_BUILD_TESTS=OFF
 cd "$root"
-exec "$root/build/viewer/prism" "$root/scenes/table.sc"
+exec "$root/build/prism" "$root/scenes/table.sc"

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Runs the benchmark's scaling series and draws docs/scaling.png (README,
 # "Performance"). Needs gnuplot (Debian: gnuplot-nox); the tests do not.
-# Usage: bench/plot-scaling.sh [path/to/prism]   (default: build/viewer/prism)
+# Usage: bench/plot-scaling.sh [path/to/prism]   (default: build/prism)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-prism=${1:-"$root/build/viewer/prism"}
+prism=${1:-"$root/build/prism"}
 mkdir -p "$root/out"
 "$prism" bench --data "$root/out/scaling.dat" | tee "$root/out/scaling.md"
 gnuplot -e "data='$root/out/scaling.dat'; out='$root/docs/scaling.png'" "$root/bench/scaling.gp"

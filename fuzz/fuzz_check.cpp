@@ -1,9 +1,9 @@
 #include "fuzz/fuzz_check.h"
 
-#include "core/accel.h"
-#include "core/camera.h"
-#include "core/ray_tree.h"
-#include "core/tracer.h"
+#include "core/accel/accel.h"
+#include "core/render/ray_tree.h"
+#include "core/render/tracer.h"
+#include "core/scene/camera.h"
 
 #include <array>
 #include <cmath>

@@ -2,8 +2,8 @@
 // pieces of plumbing they share. See docs/fuzzing.md.
 #pragma once
 
-#include "core/scene.h"
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
+#include "core/scene/scene.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -23,7 +23,7 @@ namespace prism::fuzz {
 // (one ray at a time and as one bundle), so
 // that eye, shadow, reflected and transmitted rays all run. Fails when a
 // colour is NaN or when the two hierarchies, or the single and bundled rays,
-// disagree (core/accel.h promises the very same hits). The image is small
+// disagree (core/accel/accel.h promises the very same hits). The image is small
 // whatever the scene's resolution: an execution must stay cheap.
 void renderChecks(const Scene& scene);
 

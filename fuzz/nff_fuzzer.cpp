@@ -1,6 +1,6 @@
-// The NFF reader (core/nff_reader.h) on arbitrary text, then the hierarchy and
+// The NFF reader (core/io/nff_reader.h) on arbitrary text, then the hierarchy and
 // a few traced rays over every scene it accepts.
-#include "core/nff_reader.h"
+#include "core/io/nff_reader.h"
 #include "fuzz/fuzz_check.h"
 
 using namespace prism;

@@ -1,9 +1,9 @@
-// The OBJ/MTL reader (core/obj_reader.h: Prism's scan, then tinyobjloader) on
+// The OBJ/MTL reader (core/io/obj_reader.h: Prism's scan, then tinyobjloader) on
 // arbitrary text, then the hierarchy and a few traced rays over every scene it
 // accepts. The reader takes a path: the input is written to the sandbox as
 // a.obj, and what follows a line `#mtl` as a.mtl, so that `mtllib a.mtl` lets
 // the fuzzer reach the material reader too.
-#include "core/obj_reader.h"
+#include "core/io/obj_reader.h"
 #include "fuzz/fuzz_check.h"
 
 using namespace prism;

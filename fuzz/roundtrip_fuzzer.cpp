@@ -1,11 +1,11 @@
-// `prism convert`'s promise (core/scene_writer.h): the .sc text written for a
+// `prism convert`'s promise (core/io/scene_writer.h): the .sc text written for a
 // scene reads back as the same scene. The input is read as .sc, or as NFF or
 // OBJ when its first line is `#!nff` or `#!obj` (a comment in all three);
 // whatever loads is written with writeScene, parsed back with parseScene and
 // compared. Any difference, or text that does not read back, is a crash.
-#include "core/nff_reader.h"
-#include "core/obj_reader.h"
-#include "core/scene_writer.h"
+#include "core/io/nff_reader.h"
+#include "core/io/obj_reader.h"
+#include "core/io/scene_writer.h"
 #include "fuzz/fuzz_check.h"
 
 #include <algorithm>

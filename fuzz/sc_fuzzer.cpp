@@ -1,8 +1,8 @@
-// The .sc reader (core/scene_parser.h) on arbitrary text, then the hierarchy
+// The .sc reader (core/io/scene_parser.h) on arbitrary text, then the hierarchy
 // and a few traced rays over every scene it accepts. The text is read as the
 // file main.sc of the sandbox, which holds a few parts it may include by name
 // (see fuzz_check.cpp).
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
 #include "fuzz/fuzz_check.h"
 
 using namespace prism;

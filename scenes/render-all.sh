@@ -2,10 +2,10 @@
 # Renders the four shipped scenes as the README shows them (512x512 unless the
 # scene says otherwise, depth 5, threshold 0.1) into out/, writes 256-pixel PNG
 # thumbnails to docs/, and prints the statistics table as Markdown.
-# Usage: scenes/render-all.sh [path/to/prism]   (default: build/viewer/prism)
+# Usage: scenes/render-all.sh [path/to/prism]   (default: build/prism)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-prism=${1:-"$root/build/viewer/prism"}
+prism=${1:-"$root/build/prism"}
 depth=5
 thresh=0.1
 mkdir -p "$root/out" "$root/docs"

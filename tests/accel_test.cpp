@@ -4,10 +4,10 @@
 // surfaces, run along the axes, lie in box faces or graze primitives; and
 // any-hit agreeing with closest-hit on occlusion. Also the SAH builder's tree
 // and the BVH's size.
-#include "core/bvh.h"
-#include "core/camera.h"
-#include "core/sah_builder.h"
-#include "core/scene_generators.h"
+#include "core/accel/bvh.h"
+#include "core/accel/sah_builder.h"
+#include "core/scene/camera.h"
+#include "tools/scene_generators.h"
 
 #include "scene_builder.h"
 

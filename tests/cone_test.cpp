@@ -2,10 +2,10 @@
 // open ends, rays along the axis and grazing the rim, normals, bounds,
 // transforms through the .sc `cone`, precision far from the origin, and the
 // hierarchies agreeing with brute force.
-#include "core/accel.h"
-#include "core/cone.h"
-#include "core/scene_parser.h"
-#include "core/tracer.h"
+#include "core/accel/accel.h"
+#include "core/io/scene_parser.h"
+#include "core/render/tracer.h"
+#include "core/shapes/cone.h"
 #include "tests/test_expect.h"
 
 #include <gtest/gtest.h>

@@ -2,11 +2,11 @@
 // loadScene (exactly where the language can say it exactly, to round-off
 // where a transform has to be rebuilt), and `prism convert` / `prism render`
 // with NFF and OBJ files from the command line.
-#include "core/accel.h"
-#include "core/affine_decompose.h"
-#include "core/nff_reader.h"
-#include "core/scene_parser.h"
-#include "core/scene_writer.h"
+#include "core/accel/accel.h"
+#include "core/io/nff_reader.h"
+#include "core/io/scene_parser.h"
+#include "core/io/scene_writer.h"
+#include "core/math/affine_decompose.h"
 
 #include "test_pictures.h"
 

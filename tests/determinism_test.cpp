@@ -1,9 +1,9 @@
 // The same inputs give the same picture and the same counts whatever the number
 // of threads and the tile size (which changes the order of work).
-#include "core/camera.h"
-#include "core/renderer.h"
-#include "core/scene_parser.h"
-#include "core/tracer.h"
+#include "core/io/scene_parser.h"
+#include "core/render/renderer.h"
+#include "core/render/tracer.h"
+#include "core/scene/camera.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "viewer/display.h"
 #include "viewer/gl.h"
 
-#include "core/exposure.h"
+#include "core/render/exposure.h"
 
 #include <GL/osmesa.h>
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
 // Ray-primitive intersection, polygons, transforms, the camera and the group
 // hierarchy. Every expected value is derived by hand or by closed-form math
 // written out here, independently of the code under test.
-#include "core/accel.h"
-#include "core/camera.h"
-#include "core/geometry.h"
-#include "core/group_bvh.h"
-#include "core/transform.h"
+#include "core/accel/accel.h"
+#include "core/accel/group_bvh.h"
+#include "core/math/transform.h"
+#include "core/scene/camera.h"
+#include "core/shapes/geometry.h"
 #include "tests/scene_builder.h"
 #include "tests/test_expect.h"
 

@@ -3,13 +3,13 @@
 // and each asserts the behaviour the documentation promises instead. The OBJ
 // reader's cases live in obj_test.cpp, the triangulator's in
 // triangulate_test.cpp.
-#include "core/accel.h"
-#include "core/camera.h"
-#include "core/exposure.h"
-#include "core/renderer.h"
-#include "core/scene_parser.h"
-#include "core/scene_writer.h"
-#include "core/tracer.h"
+#include "core/accel/accel.h"
+#include "core/io/scene_parser.h"
+#include "core/io/scene_writer.h"
+#include "core/render/exposure.h"
+#include "core/render/renderer.h"
+#include "core/render/tracer.h"
+#include "core/scene/camera.h"
 
 #include "tests/scene_builder.h"
 #include "tests/test_expect.h"

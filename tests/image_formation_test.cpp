@@ -1,8 +1,8 @@
 // SPEC 2 on synthetic buffers and a one-polygon scene whose radiance is known
 // exactly: the supersampling decision, sub-sample placement, avgmax, exposure.
-#include "core/exposure.h"
-#include "core/geometry.h"
-#include "core/image_formation.h"
+#include "core/render/exposure.h"
+#include "core/render/image_formation.h"
+#include "core/shapes/geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +29,8 @@ TEST(Supersampling, UniformImageNeedsNone) {
   const Film film = uniformFilm(5, 4, Rgb(0.3f, 0.2f, 0.1f));
   for (double thresh : {0.0, 0.1, 1.0})
     for (int y = 0; y < 4; ++y)
-      for (int x = 0; x < 5; ++x) EXPECT_FALSE(needsSupersampling(film, x, y, 0.3, thresh));
+      for (int x = 0; x < 5; ++x)
+        EXPECT_FALSE(needsSupersampling(film, x, y, 0.3, thresh));
 }
 
 TEST(Supersampling, TestIsStrictlyGreaterThanAvgmaxTimesThresh) {
@@ -59,7 +60,8 @@ TEST(Supersampling, AllBlackImageWithAvgmaxZeroNeedsNone) {
   const Film film = uniformFilm(4, 4, Rgb(0.0f));
   EXPECT_EQ(averageMax(film.centre), 0.0);
   for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 4; ++x) EXPECT_FALSE(needsSupersampling(film, x, y, 0.0, 0.0));
+    for (int x = 0; x < 4; ++x)
+      EXPECT_FALSE(needsSupersampling(film, x, y, 0.0, 0.0));
 }
 
 TEST(Supersampling, BordersHaveFewerNeighbours) {
@@ -185,9 +187,9 @@ TEST(AntialiasTile, SupersamplesOnlyPixelsAtTheEdgeAndKeepsPassOne) {
     EXPECT_EQ(film.supersampled[film.index(0, y)], 0);
     EXPECT_EQ(film.supersampled[film.index(1, y)], 1);
     EXPECT_EQ(film.supersampled[film.index(3, y)], 0);
-    EXPECT_FLOAT_EQ(film.radiance[film.index(1, y)].r, 0.0f); // all sub-samples black
+    EXPECT_FLOAT_EQ(film.radiance[film.index(1, y)].r, 0.0f);  // all sub-samples black
     EXPECT_FLOAT_EQ(film.radiance[film.index(2, y)].r, 0.75f); // 3 of 4 columns white
-    EXPECT_EQ(film.centre[film.index(2, y)], Rgb(1.0f));        // pass 1 untouched
+    EXPECT_EQ(film.centre[film.index(2, y)], Rgb(1.0f));       // pass 1 untouched
   }
 }
 
@@ -196,8 +198,10 @@ TEST(Tiles, CoverTheImageExactlyOnce) {
   std::vector<int> covered(70 * 33, 0);
   for (const Tile& t : tiles)
     for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x) ++covered[std::size_t(y * 70 + x)];
-  for (int c : covered) EXPECT_EQ(c, 1);
+      for (int x = t.x0; x < t.x1; ++x)
+        ++covered[std::size_t(y * 70 + x)];
+  for (int c : covered)
+    EXPECT_EQ(c, 1);
   EXPECT_EQ(tiles.size(), 3u * 2u);
 }
 

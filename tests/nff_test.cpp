@@ -1,9 +1,9 @@
 // NFF import: every command and the scene it makes (camera, lights,
 // materials, primitives, normals), a trace against hand-computed radiance, and
 // every error with its file, line and column.
-#include "core/accel.h"
-#include "core/nff_reader.h"
-#include "core/tracer.h"
+#include "core/accel/accel.h"
+#include "core/io/nff_reader.h"
+#include "core/render/tracer.h"
 #include "tests/test_expect.h"
 
 #include <gtest/gtest.h>

@@ -2,9 +2,9 @@
 // indices, with and without normals), the MTL mapping onto Prism's material,
 // groups, face lines, the default camera and lights, every error with its
 // file, line and column, and hostile input (issue 10).
-#include "core/accel.h"
-#include "core/obj_reader.h"
-#include "core/tracer.h"
+#include "core/accel/accel.h"
+#include "core/io/obj_reader.h"
+#include "core/render/tracer.h"
 
 #include "test_files.h"
 #include "tests/test_expect.h"
@@ -504,7 +504,7 @@ TEST_F(Obj, AnObjWithoutFacesGetsAFiniteCameraAndLights) {
   expectCloseTo(s.lights[0].intensity, Color(d * d), 1e-12);
 }
 
-// Coordinates are kept within +-1e30, as in every reader (core/model_range.h):
+// Coordinates are kept within +-1e30, as in every reader (core/math/model_range.h):
 // beyond, the default lights' 1/r^2 compensation and the geometry's squares
 // could overflow. Two triangles 2e200 apart were lit by infinite lights.
 TEST_F(Obj, AMeshBeyondTheSupportedRangeIsAnError) {

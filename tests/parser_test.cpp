@@ -1,8 +1,8 @@
 // The scene language of SPEC 4: every command, the state it keeps (material,
 // transform, groups, includes) and every error with its exact position. Expected
 // values are worked out by hand in the comments.
-#include "core/geometry.h"
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
+#include "core/shapes/geometry.h"
 
 #include "test_files.h"
 #include "tests/test_expect.h"

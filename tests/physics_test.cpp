@@ -3,9 +3,9 @@
 // Snell's law, total internal reflection, depth limits and ray statistics.
 // Scenes are built in code; every expected value is closed-form math written
 // out in the test, never output of the renderer.
-#include "core/accel.h"
-#include "core/camera.h"
-#include "core/tracer.h"
+#include "core/accel/accel.h"
+#include "core/render/tracer.h"
+#include "core/scene/camera.h"
 #include "tests/scene_builder.h"
 #include "tests/test_expect.h"
 

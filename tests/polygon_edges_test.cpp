@@ -1,11 +1,11 @@
-// The edge index of polygons with many vertices (core/polygon_edges.h): the
+// The edge index of polygons with many vertices (core/shapes/polygon_edges.h): the
 // same answer as testing every edge, on random rays over star polygons,
 // self-intersecting polygons, combs and grid polygons whose vertices sit on
 // the rays' rows, in every orientation; and a 10^6-vertex polygon, whose
 // full test took O(n) per ray, against the disc it approximates.
-#include "core/accel.h"
-#include "core/geometry.h"
-#include "core/scene.h"
+#include "core/accel/accel.h"
+#include "core/scene/scene.h"
+#include "core/shapes/geometry.h"
 
 #include <gtest/gtest.h>
 

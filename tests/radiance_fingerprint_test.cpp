@@ -15,10 +15,10 @@
 //   PRISM_UPDATE_REFERENCES=1 ctest -R RadianceFingerprint
 // (which rewrites tests/reference/radiance-fingerprints.txt) and say why in the
 // commit.
-#include "core/accel.h"
-#include "core/renderer.h"
-#include "core/scene_generators.h"
-#include "core/scene_parser.h"
+#include "core/accel/accel.h"
+#include "core/io/scene_parser.h"
+#include "core/render/renderer.h"
+#include "tools/scene_generators.h"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 // catch unintended changes to the pictures. After an intended change, regenerate
 // with PRISM_UPDATE_REFERENCES=1 ctest -R Regression, look at the new pictures,
 // and commit them with the change.
-#include "core/exposure.h"
-#include "core/renderer.h"
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
+#include "core/render/exposure.h"
+#include "core/render/renderer.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -26,7 +26,7 @@ constexpr int kHeight = 120;
 // optimisation levels may move a few values by a level or two where a pixel
 // straddles an antialiasing decision; a real change moves many more.
 constexpr double kPixelTolerance = 3.0 / 255.0; // a pixel beyond this "differs"
-constexpr double kMaxDifferingShare = 0.002;     // at most 0.2% of pixels differ
+constexpr double kMaxDifferingShare = 0.002;    // at most 0.2% of pixels differ
 constexpr double kMeanErrorLimit = 0.5 / 255.0;
 
 OIIO::ImageBuf renderPicture(const std::string& sceneFile) {
@@ -67,7 +67,8 @@ TEST_P(Regression, MatchesReferencePicture) {
   EXPECT_LE(differingShare, kMaxDifferingShare)
       << result.nfail << " pixels differ by more than 3 levels; max error " << result.maxerror * 255
       << " levels at (" << result.maxx << ", " << result.maxy << ")";
-  EXPECT_LE(result.meanerror, kMeanErrorLimit) << "mean error " << result.meanerror * 255 << " levels";
+  EXPECT_LE(result.meanerror, kMeanErrorLimit)
+      << "mean error " << result.meanerror * 255 << " levels";
 
   if (testing::Test::HasFailure()) {
     const std::string actualPath = ::testing::TempDir() + name + "-actual.png";

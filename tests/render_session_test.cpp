@@ -1,8 +1,8 @@
 // The previewer's render session, without a window: the progressive schedule
 // takes each sample once, the finished film is exactly render()'s, edits restart
 // and change only what they should, cancellation is prompt.
-#include "core/render_session.h"
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
+#include "core/render/render_session.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // at all (its temporary is removed on errors, exceptions and SIGINT/SIGTERM),
 // a worker's exception reaches the caller instead of ending the process, and
 // the memory a render may take is known before it starts.
-#include "core/memory_budget.h"
-#include "core/parallel.h"
-#include "core/pending_file.h"
+#include "core/io/pending_file.h"
+#include "core/render/parallel.h"
+#include "core/system/memory_budget.h"
 
 #include "test_files.h"
 

@@ -3,8 +3,8 @@
 // scene and returns how to refer to it.
 #pragma once
 
-#include "core/geometry.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
+#include "core/shapes/geometry.h"
 
 #include <cstdint>
 #include <initializer_list>

@@ -1,14 +1,14 @@
 // Mesh triangles: hits, watertight shared edges, interpolated normals and
 // their fallbacks, the .sc `triangle` and `ptriangle`, and a tessellated
 // sphere with vertex normals shading like the analytic sphere.
-#include "core/accel.h"
-#include "core/camera.h"
-#include "core/obj_reader.h"
-#include "core/scene_parser.h"
-#include "core/sphere_mesh.h"
-#include "core/tracer.h"
-#include "core/triangle.h"
+#include "core/accel/accel.h"
+#include "core/io/obj_reader.h"
+#include "core/io/scene_parser.h"
+#include "core/render/tracer.h"
+#include "core/scene/camera.h"
+#include "core/shapes/triangle.h"
 #include "tests/test_expect.h"
+#include "tools/sphere_mesh.h"
 
 #include <gtest/gtest.h>
 

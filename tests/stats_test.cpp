@@ -1,8 +1,8 @@
 // Statistics (SPEC 3): counts that can be derived by hand for simple scenes, and
 // the identities every render must satisfy.
-#include "core/renderer.h"
-#include "core/scene_parser.h"
-#include "core/stats.h"
+#include "core/io/scene_parser.h"
+#include "core/render/renderer.h"
+#include "core/render/stats.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

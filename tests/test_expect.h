@@ -2,8 +2,8 @@
 // scene text that must not parse.
 #pragma once
 
-#include "core/math.h"
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
+#include "core/math/math.h"
 
 #include <gtest/gtest.h>
 

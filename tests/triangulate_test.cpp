@@ -1,8 +1,8 @@
-// Splitting polygons into triangles (core/triangulate.h), checked against
+// Splitting polygons into triangles (core/shapes/triangulate.h), checked against
 // truth computed here independently of it: the shoelace area, an even-odd
 // crossing test for each triangle's centroid, the edges any tiling must have
 // and a brute-force test of simplicity.
-#include "core/triangulate.h"
+#include "core/shapes/triangulate.h"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 #include "viewer/file_watch.h"
 #include "viewer/view_controller.h"
 
-#include "core/exposure.h"
-#include "core/scene_loader.h"
-#include "core/scene_parser.h"
+#include "core/io/scene_loader.h"
+#include "core/io/scene_parser.h"
+#include "core/render/exposure.h"
 
 #include "viewer/camera_controls.h"
 

@@ -8,7 +8,7 @@
 #include "viewer/progress_estimate.h"
 #include "viewer/scene_files.h"
 
-#include "core/exposure.h"
+#include "core/render/exposure.h"
 
 #include "test_files.h"
 

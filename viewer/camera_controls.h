@@ -3,7 +3,7 @@
 // the spec (no window, no GL), so the mouse mapping can be unit-tested.
 #pragma once
 
-#include "core/camera.h"
+#include "core/scene/camera.h"
 
 #include <glm/vec2.hpp>
 

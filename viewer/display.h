@@ -1,11 +1,11 @@
 // Drawing the radiance buffer: texture upload and the exposure shader. The
-// shader maps radiance to 8-bit values exactly as core/exposure's
+// shader maps radiance to 8-bit values exactly as core/render/exposure's
 // exposeChannel does (a test holds them equal through Mesa), so the window shows
 // the pixels the saved TIFF will hold. Plain OpenGL 3.3 core: no ImGui and no
 // window here, so an offscreen (OSMesa) test can link it against libOSMesa.
 #pragma once
 
-#include "core/film.h"
+#include "core/render/film.h"
 
 #include <cstdint>
 #include <vector>

@@ -4,7 +4,7 @@
 #include "input_latch.h"
 #include "panels.h"
 
-#include "core/exposure.h"
+#include "core/render/exposure.h"
 
 #include <imgui.h>
 

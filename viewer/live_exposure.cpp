@@ -1,6 +1,6 @@
 #include "live_exposure.h"
 
-#include "core/exposure.h"
+#include "core/render/exposure.h"
 
 #include <cmath>
 

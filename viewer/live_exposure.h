@@ -9,7 +9,7 @@
 // and offset it by whole or fractional stops (EV).
 #pragma once
 
-#include "core/render_session.h"
+#include "core/render/render_session.h"
 
 namespace prism {
 

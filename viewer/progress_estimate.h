@@ -8,7 +8,7 @@
 // than guess when it knows neither.
 #pragma once
 
-#include "core/render_session.h"
+#include "core/render/render_session.h"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #include "save_job.h"
 
-#include "core/image_io.h"
+#include "core/io/image_io.h"
 
 #include <chrono>
 #include <iostream>

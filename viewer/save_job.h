@@ -4,8 +4,8 @@
 // render by polling, then writes on a helper thread.
 #pragma once
 
-#include "core/picture_writer.h"
-#include "core/render_session.h"
+#include "core/io/picture_writer.h"
+#include "core/render/render_session.h"
 
 #include <filesystem>
 #include <future>

@@ -5,8 +5,8 @@
 // and undo can step between layers. No GL, no ImGui.
 #pragma once
 
-#include "core/render_session.h"
-#include "core/scene.h"
+#include "core/render/render_session.h"
+#include "core/scene/scene.h"
 
 #include <cstddef>
 #include <map>

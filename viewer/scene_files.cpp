@@ -1,6 +1,6 @@
 #include "scene_files.h"
 
-#include "core/pending_file.h"
+#include "core/io/pending_file.h"
 
 #include <algorithm>
 #include <cctype>

@@ -13,8 +13,8 @@
 #include "scene_files.h"
 #include "widgets.h"
 
-#include "core/image_io.h"
-#include "core/pending_file.h"
+#include "core/io/image_io.h"
+#include "core/io/pending_file.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,10 +1,10 @@
 #include "view_controller.h"
 
-#include "core/exposure.h"
-#include "core/image_io.h"
-#include "core/pixel_tree.h"
-#include "core/scene_loader.h"
-#include "core/scene_writer.h"
+#include "core/io/image_io.h"
+#include "core/io/scene_loader.h"
+#include "core/io/scene_writer.h"
+#include "core/render/exposure.h"
+#include "core/render/pixel_tree.h"
 
 #include <algorithm>
 #include <filesystem>

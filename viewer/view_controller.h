@@ -10,7 +10,7 @@
 #include "save_job.h"
 #include "scene_edit.h"
 
-#include "core/render_session.h"
+#include "core/render/render_session.h"
 
 #include <chrono>
 #include <deque>

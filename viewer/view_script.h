@@ -29,7 +29,7 @@
 // without a window.
 #pragma once
 
-#include "core/scene_parser.h"
+#include "core/io/scene_parser.h"
 
 #include <chrono>
 #include <string>

@@ -1,0 +1,48 @@
+#include "convert_command.h"
+
+#include "load_scene.h"
+#include "render_command.h"
+
+#include "core/io/image_io.h"
+#include "core/io/scene_loader.h"
+#include "core/io/scene_writer.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+namespace prism {
+
+CLI::App* addConvertCommand(CLI::App& app, ConvertCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand("convert", "Write a scene (.sc, .nff or .obj) as a .sc file");
+  cmd->add_option("input", o.input, "Scene to read: .sc, .nff (NFF) or .obj (with its .mtl)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("output", o.output, "The .sc file to write")->required();
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
+  return cmd;
+}
+
+int runConvertCommand(const ConvertCommandOptions& o) {
+  if (sceneFormatOf(o.output) != SceneFormat::Sc) {
+    std::cerr << "prism: error: convert writes .sc scenes; '" << o.output
+              << "' names another format\n";
+    return kExitUsage;
+  }
+  if (!succeeds([&] { checkWritableFile(o.output); })) return kExitFailure;
+  const std::optional<Scene> loaded = loadSceneReporting(o.input);
+  if (!loaded) return kExitUsage;
+  const Scene& scene = *loaded;
+  if (!succeeds([&] { saveScene(o.output, scene, "Converted by prism convert from " + o.input); }))
+    return kExitFailure;
+  if (!o.quiet) {
+    std::cerr << "wrote " << o.output << ": " << scene.primitiveCount() << " primitives ("
+              << scene.spheres.size() + scene.ellipsoids.size() << " spheres, "
+              << scene.polygons.size() << " polygons, " << scene.cones.size() << " cones, "
+              << scene.triangles.size() << " triangles), " << scene.lights.size() << " lights, "
+              << scene.materials.size() << " materials\n";
+  }
+  return kExitOk;
+}
+
+} // namespace prism

@@ -1,0 +1,58 @@
+// prism: the command line. Parses arguments and hands them to a command.
+#include "bench_command.h"
+#include "convert_command.h"
+#include "render_command.h"
+#include "view_command.h"
+
+#include "core/io/pending_file.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <new>
+
+int main(int argc, char** argv) {
+  using namespace prism;
+  CLI::App app{"Prism: a recursive ray tracer with adaptive antialiasing and automatic exposure"};
+  app.set_version_flag("--version", "prism " PRISM_VERSION);
+  app.require_subcommand(1);
+
+  RenderCommandOptions render;
+  CLI::App* renderCmd = addRenderCommand(app, render);
+
+  BenchCommandOptions bench;
+  CLI::App* benchCmd = addBenchCommand(app, bench);
+
+  ViewCommandOptions view;
+  CLI::App* viewCmd = addViewCommand(app, view);
+
+  ConvertCommandOptions convert;
+  CLI::App* convertCmd = addConvertCommand(app, convert);
+
+  try {
+    const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
+    app.parse(int(args.size()), args.data());
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  // Ctrl-C or a kill while a file is being written must not leave its
+  // temporary behind.
+  removePendingFilesOnSignals();
+  // Commands report their own errors; what reaches here (memory exhausted on
+  // any thread, say) still ends with a message and the failure status, not
+  // with std::terminate and a core dump.
+  try {
+    if (renderCmd->parsed()) return runRenderCommand(render);
+    if (viewCmd->parsed()) return runViewCommand(view);
+    if (benchCmd->parsed()) return runBenchCommand(bench);
+    if (convertCmd->parsed()) return runConvertCommand(convert);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "prism: error: out of memory\n";
+    return kExitFailure;
+  } catch (const std::exception& error) {
+    std::cerr << "prism: error: " << error.what() << "\n";
+    return kExitFailure;
+  }
+  return kExitUsage;
+}

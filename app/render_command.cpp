@@ -1,0 +1,248 @@
+#include "render_command.h"
+
+#include "load_scene.h"
+#include "progress.h"
+
+#include "core/io/image_io.h"
+#include "core/io/pending_file.h"
+#include "core/io/picture_writer.h"
+#include "core/io/scene_loader.h"
+#include "core/math/math.h"
+#include "core/math/model_range.h"
+#include "core/render/exposure.h"
+#include "core/render/image_formation.h"
+#include "core/render/parallel.h"
+#include "core/render/pixel_tree.h"
+#include "core/render/stats.h"
+#include "core/render/tracer.h"
+#include "core/system/memory_budget.h"
+#include "core/system/system_info.h"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace prism {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The shortest text that reads back as exactly `x`.
+std::string number(double x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+Vec3 point(const std::vector<double>& xyz) { return Vec3(xyz[0], xyz[1], xyz[2]); }
+
+std::string text(const Vec3& v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
+
+} // namespace
+
+void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& o) {
+  command
+      .add_option("--depth", o.depth, "Maximum ray depth D >= 1 (1: ray casting with shadows) [5]")
+      ->check(CLI::Range(1, 1000));
+  command.add_option("--thresh", o.thresh, "Antialiasing threshold in [0, 1]")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command.add_option("--size", o.size, "Image size W H (overrides the scene's resolution)")
+      ->expected(2)
+      ->check(CLI::Range(1, 32768));
+  command.add_option("--threads", o.threads, "Render threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
+  command.add_flag("--jitter", o.jitter, "Jitter the 16 sub-samples within their cells");
+  command
+      .add_option("--accel", o.accel,
+                  "Ray acceleration: bvh (SAH hierarchy, default), groups (the push/pop "
+                  "hierarchy) or none (test every primitive)")
+      ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case));
+  // Checked once the scene is loaded (applyCameraOptions), with the scene
+  // language's rules and messages.
+  command.add_option("--eye", o.eye, "Camera position X Y Z (overrides the scene's eye)")
+      ->expected(3);
+  command.add_option("--lookat", o.lookat, "Point X Y Z the camera looks at (overrides lookat)")
+      ->expected(3);
+  command.add_option("--fov", o.fov,
+                     "Full vertical field of view in degrees, 0 < fov < 180 (overrides fov)");
+}
+
+bool hasCameraOptions(const RenderCommandOptions& o) {
+  return !o.eye.empty() || !o.lookat.empty() || o.fov.has_value();
+}
+
+std::optional<std::string> cameraOptionsProblem(const RenderCommandOptions& o) {
+  if (o.fov && !(*o.fov > 0.0 && *o.fov < 180.0))
+    return "--fov: DEGREES must be greater than 0 and less than 180, found " + number(*o.fov);
+  for (const auto& [name, xyz] : {std::pair{"--eye", &o.eye}, std::pair{"--lookat", &o.lookat}})
+    if (!xyz->empty() && !withinModelRange(point(*xyz)))
+      return std::string(name) + " " + text(point(*xyz)) + ": the point must be within +-" +
+             kMaxCoordinateText;
+  return std::nullopt;
+}
+
+std::optional<std::string> applyCameraOptions(const RenderCommandOptions& o, CameraSpec& camera) {
+  if (std::optional<std::string> problem = cameraOptionsProblem(o)) return problem;
+  CameraSpec c = camera;
+  if (!o.eye.empty()) c.eye = point(o.eye);
+  if (!o.lookat.empty()) c.lookat = point(o.lookat);
+  if (o.fov) c.fov = *o.fov;
+  if (!o.eye.empty() || !o.lookat.empty()) {
+    // The parser's camera checks (core/io/scene_parser.cpp), which are the
+    // computation of Camera's constructor, so that it cannot produce NaN.
+    const std::string given = !o.eye.empty() && !o.lookat.empty() ? "--eye and --lookat"
+                              : !o.eye.empty()                    ? "--eye"
+                                                                  : "--lookat";
+    const std::string view = "eye " + text(c.eye) + ", lookat " + text(c.lookat);
+    const Vec3 direction = c.lookat - c.eye;
+    if (direction == Vec3(0.0))
+      return given + ": eye and lookat are the same point (" + text(c.eye) +
+             "), so there is no view direction";
+    const Vec3 forward = glm::normalize(direction);
+    if (!isFinite(forward))
+      return given +
+             ": eye and lookat are too close together or too far apart to give a view "
+             "direction (" +
+             view + ")";
+    if (c.up == Vec3(0.0)) return given + ": the scene's up is the zero vector";
+    const Vec3 unitUp = glm::normalize(c.up / maxAbsComponent(c.up));
+    if (glm::length(glm::cross(forward, unitUp)) < 1e-9)
+      return given + ": the scene's up (" + text(c.up) +
+             ") is parallel to the view direction from eye to lookat (" + view + ")";
+    if (!isFinite(glm::normalize(glm::cross(forward, c.up))))
+      return given + ": the scene's up (" + text(c.up) +
+             ") is too short to give a direction with this view (" + view + ")";
+  }
+  camera = c;
+  return std::nullopt;
+}
+
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
+  CLI::App* command = app.add_subcommand("render", "Render a scene to an image file, headless");
+  command->add_option("scene", o.scene, "Scene file (.sc, .nff or .obj)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", o.output,
+                      "Output image: .tif/.tiff (8-bit RGB), .png, .exr (float radiance), ...");
+  addRenderSettingsOptions(*command, o);
+  command->add_flag("--float", o.floatTiff,
+                    "Write float radiance before exposure (implied by .exr and .hdr)");
+  command->add_option("--stats-json", o.statsJson,
+                      "Also write the statistics as JSON to this file");
+  command->add_option("--pixel", o.pixel, "Print the ray tree of pixel X Y instead of rendering")
+      ->expected(2)
+      ->check(CLI::NonNegativeNumber);
+  command->add_flag("-q,--quiet", o.quiet, "No progress and no statistics on stderr");
+  command->callback([&o] {
+    if (o.pixel.empty() && o.output.empty())
+      throw CLI::RequiredError("-o,--output (unless --pixel is given)");
+  });
+  return command;
+}
+
+int runRenderCommand(const RenderCommandOptions& o) {
+  if (const std::optional<std::string> problem = cameraOptionsProblem(o)) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitUsage;
+  }
+  // Every output is checked before any work: a typo in a folder name must not
+  // cost a render, or leave a picture without its statistics.
+  const bool writable = succeeds([&] {
+    if (o.pixel.empty()) checkWritable(o.output);
+    if (!o.statsJson.empty()) checkWritableFile(o.statsJson);
+  });
+  if (!writable) return kExitFailure;
+
+  const auto loadStart = Clock::now();
+  std::optional<Scene> loaded = loadSceneReporting(o.scene);
+  if (!loaded) return kExitUsage;
+  if (const std::optional<std::string> problem = applyCameraOptions(o, loaded->camera)) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitUsage;
+  }
+  const Scene& scene = *loaded;
+  const double loadSeconds = secondsSince(loadStart);
+
+  RenderSettings settings;
+  settings.width = o.size.empty() ? scene.width : o.size[0];
+  settings.height = o.size.empty() ? scene.height : o.size[1];
+  settings.maxDepth = o.depth.value_or(5);
+  settings.thresh = o.thresh;
+  settings.jitter = o.jitter;
+  settings.threads = resolveThreadCount(o.threads);
+
+  if (!o.pixel.empty() && (o.pixel[0] >= settings.width || o.pixel[1] >= settings.height)) {
+    std::cerr << "prism: error: --pixel " << o.pixel[0] << " " << o.pixel[1] << " is outside the "
+              << settings.width << " x " << settings.height << " image\n";
+    return kExitUsage;
+  }
+  if (o.pixel.empty()) {
+    const std::string what =
+        "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) + " render";
+    if (const std::optional<std::string> problem = memoryProblem(
+            imageBytes(settings.width, settings.height, kRenderBytesPerPixel), what)) {
+      std::cerr << "prism: error: " << *problem << "\n";
+      return kExitFailure;
+    }
+  }
+
+  const auto buildStart = Clock::now();
+  const auto accel = makeAccel(scene, o.accel);
+  const double buildSeconds = secondsSince(buildStart);
+  if (!o.pixel.empty()) {
+    std::cout << pixelRayTreeText(scene, *accel, settings, o.pixel[0], o.pixel[1]);
+    return kExitOk;
+  }
+
+  RenderStats stats;
+  const double cpuStart = processCpuSeconds();
+  const auto renderStart = Clock::now();
+  RenderResult result;
+  {
+    ProgressReporter reporter(!o.quiet);
+    result = render(scene, *accel, settings, [&](const RenderProgress& p) { reporter.update(p); });
+  }
+  stats.wallSeconds = secondsSince(renderStart);
+  stats.cpuSeconds = processCpuSeconds() - cpuStart;
+
+  const bool written =
+      succeeds([&] { writePicture(o.output, result, isFloatFormat(o.output) || o.floatTiff); });
+  if (!written) return kExitFailure;
+
+  stats.scene = o.scene;
+  stats.machine = machineDescription();
+  stats.accel = accelKindName(o.accel);
+  stats.width = settings.width;
+  stats.height = settings.height;
+  stats.maxDepth = settings.maxDepth;
+  stats.thresh = settings.thresh;
+  stats.jitter = settings.jitter;
+  stats.threads = settings.threads;
+  stats.primitives = scene.primitiveCount();
+  stats.loadSeconds = loadSeconds;
+  stats.buildSeconds = buildSeconds;
+  stats.counts = result.counts;
+  stats.supersampledPixels = result.supersampledPixels;
+  stats.avgmax = result.avgmax;
+  if (!o.quiet) std::cerr << formatStatsText(stats);
+  if (!o.statsJson.empty()) {
+    const std::string json = formatStatsJson(stats);
+    if (!succeeds(
+            [&] { writeFileAtomically(o.statsJson, [&](std::ostream& out) { out << json; }); }))
+      return kExitFailure;
+  }
+  return kExitOk;
+}
+
+} // namespace prism

@@ -1,0 +1,65 @@
+// `prism render`: load a scene, render it headless, write the picture and the
+// statistics. Also the --pixel ray-tree mode.
+#pragma once
+
+#include "core/accel/accel.h"
+#include "core/render/renderer.h"
+#include "core/scene/camera.h"
+
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace prism {
+
+struct RenderCommandOptions {
+  std::string scene;
+  std::string output;         // image path; the format follows its extension
+  std::optional<int> depth;   // max ray depth (default 5)
+  double thresh = 0.1;        // antialiasing threshold
+  std::vector<int> size;      // W H, overriding the scene's `resolution`
+  std::vector<double> eye;    // X Y Z, overriding the scene's camera (empty: the scene's)
+  std::vector<double> lookat; // X Y Z
+  std::optional<double> fov;  // degrees
+  int threads = 0;            // 0: all cores
+  bool jitter = false;
+  bool floatTiff = false; // write float radiance instead of 8-bit pixels
+  AccelKind accel = AccelKind::Bvh;
+  std::string statsJson;  // where to write the statistics as JSON
+  std::vector<int> pixel; // X Y: print this pixel's ray tree instead of rendering
+  bool quiet = false;     // no progress, no statistics on stderr
+};
+
+// Exit codes of SPEC 5: 0 success, 1 render/IO failure, 2 usage or scene error.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+// Adds the options every rendering command shares (--depth, --thresh, --size,
+// --threads, --jitter, --accel, --eye, --lookat, --fov) to `command`, filling
+// `options`.
+void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& options);
+
+// The camera options, each on its own, checked with the scene language's rules
+// before anything is loaded: --fov strictly between 0 and 180 degrees, points
+// within +-kMaxCoordinate. Returns the message (without "prism: error: ").
+std::optional<std::string> cameraOptionsProblem(const RenderCommandOptions& options);
+
+// The one place the camera options are applied, for `render`, `view` and its
+// headless fallback: puts them over `camera` (the loaded scene's) and checks
+// the view they make as the scene language does (eye != lookat, the scene's
+// `up` not parallel to the new view direction), after cameraOptionsProblem.
+// On a problem `camera` is left as it was and the message is returned.
+std::optional<std::string> applyCameraOptions(const RenderCommandOptions& options,
+                                              CameraSpec& camera);
+bool hasCameraOptions(const RenderCommandOptions& options);
+
+// Adds the `render` subcommand to `app`, filling `options`.
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options);
+
+int runRenderCommand(const RenderCommandOptions& options);
+
+} // namespace prism

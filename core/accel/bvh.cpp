@@ -1,0 +1,520 @@
+#include "core/accel/bvh.h"
+
+#include "core/accel/sah_builder.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace prism {
+
+namespace {
+
+// Four double lanes, one per child box. With SSE2 (every x86-64) they are two
+// register pairs written out, because GCC lowers 32-byte vector extensions
+// poorly without AVX; elsewhere, GCC/Clang vector extensions.
+#if defined(__SSE2__)
+struct Lanes {
+  __m128d lo, hi;
+};
+inline Lanes broadcast(double x) { return {_mm_set1_pd(x), _mm_set1_pd(x)}; }
+inline Lanes loadBounds(const float* p) {
+  const __m128 f = _mm_loadu_ps(p);
+  return {_mm_cvtps_pd(f), _mm_cvtps_pd(_mm_movehl_ps(f, f))};
+}
+inline Lanes operator-(Lanes a, Lanes b) {
+  return {_mm_sub_pd(a.lo, b.lo), _mm_sub_pd(a.hi, b.hi)};
+}
+inline Lanes operator*(Lanes a, Lanes b) {
+  return {_mm_mul_pd(a.lo, b.lo), _mm_mul_pd(a.hi, b.hi)};
+}
+// a > b ? a : b and a < b ? a : b lane by lane: b wherever either is a NaN.
+inline Lanes maxOr(Lanes a, Lanes b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
+inline Lanes minOr(Lanes a, Lanes b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
+// Bit i set where lane i of a <= b.
+inline unsigned lessEqualMask(Lanes a, Lanes b) {
+  return unsigned(_mm_movemask_pd(_mm_cmple_pd(a.lo, b.lo))) |
+         unsigned(_mm_movemask_pd(_mm_cmple_pd(a.hi, b.hi))) << 2;
+}
+inline void store(double* out, Lanes a) {
+  _mm_storeu_pd(out, a.lo);
+  _mm_storeu_pd(out + 2, a.hi);
+}
+inline Lanes load(const double* p) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2)}; }
+#else
+// Internal and inlined, so GCC's note that such values are passed differently
+// with AVX is moot.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+using Lanes = double __attribute__((vector_size(32)));
+using LanesF = float __attribute__((vector_size(16)));
+inline Lanes broadcast(double x) { return Lanes{x, x, x, x}; }
+inline Lanes loadBounds(const float* p) {
+  LanesF f;
+  std::memcpy(&f, p, sizeof f);
+  return __builtin_convertvector(f, Lanes);
+}
+inline Lanes maxOr(Lanes a, Lanes b) { return a > b ? a : b; }
+inline Lanes minOr(Lanes a, Lanes b) { return a < b ? a : b; }
+inline unsigned lessEqualMask(Lanes a, Lanes b) {
+  const auto m = a <= b;
+  unsigned mask = 0;
+  for (int i = 0; i < 4; ++i)
+    mask |= unsigned(m[i] != 0) << i;
+  return mask;
+}
+inline void store(double* out, Lanes a) { std::memcpy(out, &a, sizeof a); }
+inline Lanes load(const double* p) {
+  Lanes a;
+  std::memcpy(&a, p, sizeof a);
+  return a;
+}
+#endif
+
+constexpr std::uint32_t kKindShift = 29; // 3 bits of PrimitiveKind, 29 of index
+constexpr std::uint32_t kIndexMask = (1u << kKindShift) - 1;
+
+inline PrimitiveRef decodeRef(std::uint32_t code) {
+  return {PrimitiveKind(code >> kKindShift), code & kIndexMask};
+}
+
+// Where the origin is taken to be when the near and the far bound of an
+// axis are tested: moved by boxSlack toward the far side for the near bound
+// and toward the near side for the far one, which widens every box by the
+// slack at no cost per node.
+struct SlackOrigin {
+  double near, far;
+};
+SlackOrigin slackOrigin(double origin, double inverseDirection, double slack) {
+  const double toward = inverseDirection < 0.0 ? -slack : slack;
+  return {origin + toward, origin - toward};
+}
+
+// One ray as the node test needs it: origin and reciprocal direction in every
+// lane, and which bound of each axis the ray meets first (the lower one when
+// travelling toward +axis).
+struct NodeRay {
+  Lanes nearOrigin[3]; // the origin for the near bounds (see slackOrigin)
+  Lanes farOrigin[3];
+  Lanes inv[3];
+  int nearRow[3];
+  int farRow[3];
+
+  explicit NodeRay(const Ray& ray) {
+    const Vec3 invDir = 1.0 / ray.dir;
+    const double slack = boxSlack(ray);
+    for (int a = 0; a < 3; ++a) {
+      const SlackOrigin o = slackOrigin(ray.origin[a], invDir[a], slack);
+      nearOrigin[a] = broadcast(o.near);
+      farOrigin[a] = broadcast(o.far);
+      inv[a] = broadcast(invDir[a]);
+      nearRow[a] = 2 * a + (invDir[a] < 0.0 ? 1 : 0);
+      farRow[a] = 2 * a + (invDir[a] < 0.0 ? 0 : 1);
+    }
+  }
+
+  // Where the ray enters each of the node's four child boxes (tNear), clipped
+  // to `range`, and which children it meets inside `range` (tNear <= tFar).
+  Lanes enter(const Bvh::Node& node, Interval range, Lanes& tFar) const {
+    Lanes tNear = broadcast(range.min);
+    tFar = broadcast(range.max);
+    for (int a = 0; a < 3; ++a) {
+      const Lanes t0 = (loadBounds(node.bounds[nearRow[a]]) - nearOrigin[a]) * inv[a];
+      const Lanes t1 = (loadBounds(node.bounds[farRow[a]]) - farOrigin[a]) * inv[a];
+      // Written so a NaN (0 * inf, for a ray lying in a box's face plane)
+      // leaves the range unchanged: that axis does not cull.
+      tNear = maxOr(t0, tNear);
+      tFar = minOr(t1, tFar);
+    }
+    return tNear;
+  }
+};
+
+constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
+
+// The children waiting to be visited, each with where it is first entered
+// (Entry::t). On the machine stack unless the tree is deeper than that allows.
+template <class Entry> class TraversalStack {
+public:
+  explicit TraversalStack(int treeDepth) {
+    if (const std::size_t need = 3 * std::size_t(treeDepth) + 1; need > kLocalStack) {
+      heap_.resize(need);
+      entries_ = heap_.data();
+    }
+  }
+
+  // Sorts the n (at most 4) children just met nearest first, keeps all but the
+  // nearest, farthest deepest, and returns the nearest, to descend into at once.
+  Entry pushAllButNearest(Entry* children, int n) {
+    for (int i = 1; i < n; ++i)
+      for (int j = i; j > 0 && children[j].t < children[j - 1].t; --j)
+        std::swap(children[j], children[j - 1]);
+    for (int i = n - 1; i > 0; --i)
+      entries_[top_++] = children[i];
+    return children[0];
+  }
+
+  // The nearest waiting child that starts at or before `limit` (at exactly it
+  // too, for the tie-break of keepNearest); the others are dropped on the way.
+  bool pop(double limit, Entry& next) {
+    while (top_ > 0) {
+      next = entries_[--top_];
+      if (next.t <= limit) return true;
+    }
+    return false;
+  }
+
+private:
+  Entry local_[kLocalStack];
+  std::vector<Entry> heap_; // only for trees deeper than the local stack allows
+  Entry* entries_ = local_;
+  std::size_t top_ = 0;
+};
+
+// Single-precision bounds that contain the double-precision ones.
+float roundDown(double x) {
+  float f = float(x);
+  if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+float roundUp(double x) {
+  float f = float(x);
+  if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+double halfArea(const Aabb& b) {
+  const Vec3 e = b.extent();
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+} // namespace
+
+struct Bvh::BuildContext {
+  const SahTree& tree;
+};
+
+Bvh::Bvh(const Scene& scene) : scene_(scene) {
+  const std::vector<PrimitiveRef> prims = scene.allPrimitives();
+  if (prims.empty()) return;
+  if (prims.size() > kFirstMask) throw std::length_error("too many primitives for the BVH");
+  std::vector<Aabb> boxes;
+  boxes.reserve(prims.size());
+  for (const PrimitiveRef& p : prims)
+    boxes.push_back(scene.bounds(p));
+  SahOptions options;
+  options.maxLeaf = std::min<std::uint32_t>(options.maxLeaf, kMaxLeaf);
+  const SahTree tree = buildSahTree(boxes, options);
+
+  refs_.reserve(prims.size());
+  for (std::uint32_t i : tree.order)
+    refs_.push_back(std::uint32_t(prims[i].kind) << kKindShift | prims[i].index);
+  // A 4-wide tree has about a third as many nodes as the binary one has leaves.
+  nodes_.reserve(tree.nodes.size() / 6 + 1);
+  BuildContext context{tree};
+  collapse(context, 0, 1);
+}
+
+// Makes the node for binary node `b` and its descendants: the node's children
+// are the (up to four) binary descendants left after repeatedly opening the
+// largest inner one. Returns the new node's index.
+std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
+  const SahTree& tree = context.tree;
+  std::uint32_t kids[4];
+  int count = 0;
+  if (tree.nodes[b].leaf()) {
+    kids[count++] = b; // only for a root that is a leaf
+  } else {
+    kids[count++] = tree.nodes[b].left;
+    kids[count++] = tree.nodes[b].right;
+    while (count < 4) {
+      int open = -1;
+      double largest = -1.0;
+      for (int i = 0; i < count; ++i) {
+        const SahTree::Node& n = tree.nodes[kids[i]];
+        if (!n.leaf() && halfArea(n.box) > largest) {
+          largest = halfArea(n.box);
+          open = i;
+        }
+      }
+      if (open < 0) break;
+      const SahTree::Node& n = tree.nodes[kids[open]];
+      kids[open] = n.left;
+      kids[count++] = n.right;
+    }
+  }
+
+  const auto index = std::uint32_t(nodes_.size());
+  nodes_.emplace_back();
+  depth_ = std::max(depth_, depth);
+  Node node;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int i = 0; i < 4; ++i) {
+      node.bounds[2 * axis][i] = std::numeric_limits<float>::infinity();
+      node.bounds[2 * axis + 1][i] = -std::numeric_limits<float>::infinity();
+    }
+  for (int i = 0; i < 4; ++i)
+    node.child[i] = 0;
+  for (int i = 0; i < count; ++i) {
+    const SahTree::Node& n = tree.nodes[kids[i]];
+    Aabb box = n.box;
+    // The same relative margin as every hierarchy here: round-off in a hit's t
+    // must never put a primitive's hit outside its box.
+    box.pad();
+    for (int axis = 0; axis < 3; ++axis) {
+      node.bounds[2 * axis][i] = roundDown(box.lo[axis]);
+      node.bounds[2 * axis + 1][i] = roundUp(box.hi[axis]);
+    }
+    node.child[i] = n.leaf() ? kLeafBit | (n.count - 1) << kCountShift | n.first
+                             : collapse(context, kids[i], depth + 1);
+  }
+  nodes_[index] = node;
+  return index;
+}
+
+template <bool AnyHit>
+bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
+  if (nodes_.empty() || !isFinite(ray)) return false;
+  const NodeRay nodeRay(ray);
+
+  struct Entry {
+    std::uint32_t ref;
+    double t; // where the ray enters the child's box
+  };
+  TraversalStack<Entry> stack(depth_);
+  bool found = false;
+  Entry current{0, 0.0};
+  for (;;) {
+    const std::uint32_t ref = current.ref;
+    if ((ref & kLeafBit) == 0) {
+      const Node& node = nodes_[ref];
+      Lanes tFar;
+      const Lanes tNear = nodeRay.enter(node, range, tFar);
+      const unsigned hitMask = lessEqualMask(tNear, tFar);
+      double tEnter[4];
+      store(tEnter, tNear);
+      Entry hits[4];
+      int n = 0;
+      for (int i = 0; i < 4; ++i)
+        if ((hitMask >> i) & 1u) hits[n++] = {node.child[i], tEnter[i]};
+      if (n > 0) {
+        current = stack.pushAllButNearest(hits, n);
+        continue;
+      }
+    } else {
+      const std::uint32_t first = ref & kFirstMask;
+      const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
+      for (std::uint32_t i = first; i < end; ++i) {
+        const PrimitiveRef prim = decodeRef(refs_[i]);
+        if (skip != nullptr && prim == *skip) continue;
+        double t;
+        if (intersectPrimitive(scene_, prim, ray, range, t)) {
+          if constexpr (AnyHit) {
+            if (hit != nullptr) *hit = {t, prim}; // the blocker, when asked for
+            return true;
+          }
+          keepNearest({t, prim}, found, *hit, range);
+        }
+      }
+    }
+    // Next: the nearest waiting child that still starts before the nearest hit.
+    if (!stack.pop(range.max, current)) return found;
+  }
+}
+
+// A bundle of rays from one origin walks the tree together. Each node's four
+// boxes are tested once for the whole bundle with interval arithmetic: on each
+// axis the rays' reciprocal directions lie between the least and the greatest
+// of them (all of one sign), so with c = bound - origin, c * inv lies between
+// c * invLo and c * invHi, and rounding keeps that order. The bundle's entry
+// (the smallest of those) is thus at or before every ray's own computed entry
+// and its exit at or after every ray's exit: a box any ray of the bundle would
+// enter is entered, exactly as the one-ray test decides. The boxes of leaves
+// are then tested ray by ray with the one-ray test, and only the rays that
+// enter a leaf test its primitives, so every ray gets closestHit's answer.
+// Each waiting child carries the rays that may still enter it: where the
+// scene's boxes grow smaller than the gaps between the rays, the rays are
+// sorted out ray by ray there too, and the subtree is walked for those alone.
+namespace {
+
+// The largest extent of child c's box.
+double boxWidth(const Bvh::Node& node, int c) {
+  double width = 0.0;
+  for (int a = 0; a < 3; ++a)
+    width = std::max(width, double(node.bounds[2 * a + 1][c]) - double(node.bounds[2 * a][c]));
+  return width;
+}
+
+} // namespace
+
+std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const {
+  const std::size_t count = rays.size();
+  // Per ray, four at a time: 1/d on each axis and the end of the ray's range
+  // (range.min is 0 for every ray). Lanes past `count` never enter a box.
+  constexpr std::size_t kSlots = kMaxBundle + 4;
+  double inv[3][kSlots], rangeMax[kSlots];
+  const double slack = boxSlack(rays[0]); // the rays share their origin
+  double nearOrigin[3], farOrigin[3];     // see slackOrigin
+  Lanes bundleNear[3], bundleFar[3], invLo[3], invHi[3];
+  int nearRow[3], farRow[3];
+  // How far apart the rays are at distance t: about t * spread.
+  double spread = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < count; ++i) {
+      inv[a][i] = 1.0 / rays[i].dir[a];
+      lo = std::min(lo, inv[a][i]);
+      hi = std::max(hi, inv[a][i]);
+    }
+    std::fill(&inv[a][count], &inv[a][kSlots], 1.0);
+    // Every ray of the bundle has lo's sign on this axis.
+    const SlackOrigin o = slackOrigin(rays[0].origin[a], lo, slack);
+    nearOrigin[a] = o.near;
+    farOrigin[a] = o.far;
+    bundleNear[a] = broadcast(o.near);
+    bundleFar[a] = broadcast(o.far);
+    invLo[a] = broadcast(lo);
+    invHi[a] = broadcast(hi);
+    nearRow[a] = 2 * a + (lo < 0.0 ? 1 : 0); // every ray has the sign of lo
+    farRow[a] = 2 * a + (lo < 0.0 ? 0 : 1);
+    // 1/d is monotonic on d's sign: the directions' range is 1/hi .. 1/lo.
+    spread = std::max(spread, std::abs(1.0 / lo - 1.0 / hi));
+  }
+  std::fill(&rangeMax[0], &rangeMax[count], std::numeric_limits<double>::infinity());
+  std::fill(&rangeMax[count], &rangeMax[kSlots], -std::numeric_limits<double>::infinity());
+  std::uint64_t found = 0;
+  double bundleMax = std::numeric_limits<double>::infinity(); // the largest rangeMax
+
+  // The rays of `active` (a bit mask) that enter child c of `node`: the
+  // one-ray test of NodeRay::enter, term for term, four rays at a time.
+  auto raysEntering = [&](const Node& node, int c, std::uint64_t active) {
+    double toNear[3], toFar[3];
+    for (int a = 0; a < 3; ++a) {
+      toNear[a] = double(node.bounds[nearRow[a]][c]) - nearOrigin[a];
+      toFar[a] = double(node.bounds[farRow[a]][c]) - farOrigin[a];
+    }
+    std::uint64_t entering = 0;
+    for (std::size_t i = 0; i < count; i += 4) {
+      if ((active >> i & 0xf) == 0) continue;
+      Lanes tNear = broadcast(0.0), tFar = load(&rangeMax[i]);
+      for (int a = 0; a < 3; ++a) {
+        const Lanes invA = load(&inv[a][i]);
+        tNear = maxOr(broadcast(toNear[a]) * invA, tNear);
+        tFar = minOr(broadcast(toFar[a]) * invA, tFar);
+      }
+      entering |= std::uint64_t(lessEqualMask(tNear, tFar)) << i;
+    }
+    return entering & active;
+  };
+
+  struct Entry {
+    std::uint32_t ref;
+    double t;           // where the bundle may first enter the child's box
+    std::uint64_t rays; // the rays that may enter it (for a leaf: that do)
+  };
+  TraversalStack<Entry> stack(depth_);
+  Entry current{0, 0.0, count == kMaxBundle ? ~std::uint64_t(0) : (std::uint64_t(1) << count) - 1};
+  for (;;) {
+    if ((current.ref & kLeafBit) == 0) {
+      const Node& node = nodes_[current.ref];
+      Lanes tNear = broadcast(0.0), tFar = broadcast(bundleMax);
+      for (int a = 0; a < 3; ++a) {
+        const Lanes toNear = loadBounds(node.bounds[nearRow[a]]) - bundleNear[a];
+        const Lanes toFar = loadBounds(node.bounds[farRow[a]]) - bundleFar[a];
+        tNear = maxOr(minOr(toNear * invLo[a], toNear * invHi[a]), tNear);
+        tFar = minOr(maxOr(toFar * invLo[a], toFar * invHi[a]), tFar);
+      }
+      const unsigned mask = lessEqualMask(tNear, tFar);
+      double tEnter[4];
+      store(tEnter, tNear);
+      Entry next[4];
+      int n = 0;
+      for (int c = 0; c < 4; ++c) {
+        if ((mask >> c & 1u) == 0) continue;
+        // A leaf's rays are found ray by ray; so are those of a box narrower
+        // than the bundle where the bundle meets it, which most rays miss
+        // (a wider box keeps its parent's rays, unchecked, as the test of
+        // every ray there would cost more than it saves).
+        std::uint64_t active = current.rays;
+        const bool leaf = (node.child[c] & kLeafBit) != 0;
+        if (leaf || boxWidth(node, c) < spread * tEnter[c]) {
+          active = raysEntering(node, c, active);
+          if (active == 0) continue;
+        }
+        next[n++] = {node.child[c], tEnter[c], active};
+      }
+      if (n > 0) {
+        current = stack.pushAllButNearest(next, n);
+        continue;
+      }
+    } else {
+      const std::uint32_t begin = current.ref & kFirstMask;
+      const std::uint32_t end = begin + ((current.ref >> kCountShift) & 0xf) + 1;
+      for (std::uint32_t p = begin; p < end; ++p) {
+        const PrimitiveRef prim = decodeRef(refs_[p]);
+        for (std::uint64_t m = current.rays; m != 0; m &= m - 1) {
+          const auto i = std::size_t(std::countr_zero(m));
+          Interval range{0.0, rangeMax[i]};
+          double t;
+          if (intersectPrimitive(scene_, prim, rays[i], range, t)) {
+            bool rayFound = (found >> i & 1u) != 0;
+            keepNearest({t, prim}, rayFound, hits[i], range);
+            rangeMax[i] = range.max;
+            found |= std::uint64_t(1) << i;
+          }
+        }
+      }
+      bundleMax = *std::max_element(&rangeMax[0], &rangeMax[count]);
+    }
+    if (!stack.pop(bundleMax, current)) return found;
+  }
+}
+
+bool walksTogether(std::span<const Ray> rays) {
+  if (rays.size() < 2 || rays.size() > Accel::kMaxBundle) return false;
+  for (const Ray& ray : rays) {
+    for (int a = 0; a < 3; ++a) {
+      const bool sameOrigin = ray.origin[a] == rays[0].origin[a];
+      const bool sameSign = (ray.dir[a] < 0.0) == (rays[0].dir[a] < 0.0);
+      // 1/d must be finite and not 0, or c * inv is a NaN where c is 0 (or
+      // infinite): d finite and at least the smallest normal double (a
+      // subnormal d, possibly fine, goes ray by ray too). A non-finite origin
+      // goes ray by ray, where it hits nothing.
+      const double d = std::abs(ray.dir[a]);
+      if (!sameOrigin || !sameSign || !(d >= std::numeric_limits<double>::min()) || std::isinf(d) ||
+          !std::isfinite(ray.origin[a]))
+        return false;
+    }
+  }
+  return true;
+}
+
+std::uint64_t Bvh::closestHits(std::span<const Ray> rays, std::span<Hit> hits) const {
+  if (nodes_.empty() || !walksTogether(rays)) return Accel::closestHits(rays, hits);
+  return traverseBundle(rays, hits);
+}
+
+bool Bvh::closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit& hit) const {
+  return traverse<false>(ray, range, skip, &hit);
+}
+
+bool Bvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                 PrimitiveRef* blocker) const {
+  Hit hit;
+  const bool found = traverse<true>(ray, range, skip, blocker != nullptr ? &hit : nullptr);
+  if (found && blocker != nullptr) *blocker = hit.primitive;
+  return found;
+}
+
+std::size_t Bvh::memoryBytes() const {
+  return nodes_.size() * sizeof(Node) + refs_.size() * sizeof(std::uint32_t);
+}
+
+} // namespace prism

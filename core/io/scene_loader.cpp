@@ -1,0 +1,33 @@
+#include "core/io/scene_loader.h"
+
+#include "core/io/nff_reader.h"
+#include "core/io/obj_reader.h"
+
+#include <cctype>
+
+namespace prism {
+
+SceneFormat sceneFormatOf(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".nff") return SceneFormat::Nff;
+  if (ext == ".obj") return SceneFormat::Obj;
+  return SceneFormat::Sc;
+}
+
+Scene loadAnyScene(const std::filesystem::path& path, std::vector<Diagnostic>* warnings) {
+  switch (sceneFormatOf(path)) {
+  case SceneFormat::Nff: return loadNff(path, warnings);
+  case SceneFormat::Obj: return loadObj(path, warnings);
+  case SceneFormat::Sc: break;
+  }
+  return loadScene(path);
+}
+
+std::string formatWarning(const Diagnostic& d) {
+  return d.file + ":" + std::to_string(d.line) + ":" + std::to_string(d.column) +
+         ": warning: " + d.message;
+}
+
+} // namespace prism

@@ -1,0 +1,993 @@
+// The .sc scene language (SPEC 4; user documentation in docs/scene-language.md).
+//
+// A hand-written lexer over the whole file text and a recursive-descent parser,
+// one small member function per command. Errors never stop the parse early: each
+// is recorded with its position, the rest of the broken command is skipped, and
+// parsing continues so that one run reports every problem (up to a cap).
+#include "core/io/scene_parser.h"
+
+#include "core/io/scene_text.h"
+#include "core/math/model_range.h"
+#include "core/math/transform.h"
+#include "core/shapes/cone.h"
+#include "core/shapes/geometry.h"
+#include "core/shapes/triangle.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+
+namespace prism {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------
+// Diagnostics
+
+// File names come from the command line and from `include` lines, and
+// messages quote the input: both are made printable (invalid UTF-8 escaped).
+std::string Diagnostic::format() const {
+  return printable(file) + ":" + std::to_string(line) + ":" + std::to_string(column) +
+         ": error: " + printable(message);
+}
+
+namespace {
+
+std::string formatAll(const std::vector<Diagnostic>& diagnostics) {
+  std::string text;
+  for (const Diagnostic& d : diagnostics) {
+    if (!text.empty()) text += '\n';
+    text += d.format();
+  }
+  return text;
+}
+
+} // namespace
+
+SceneError::SceneError(std::vector<Diagnostic> diagnostics)
+    : std::runtime_error(formatAll(diagnostics)), diagnostics_(std::move(diagnostics)) {}
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Limits that keep hostile input from exhausting time or memory.
+
+constexpr std::size_t kMaxDiagnostics = 50;
+constexpr std::size_t kMaxIncludeDepth = 64; // files open at once, the main file included
+// kMaxSceneBytes (core/io/scene_text.h) bounds the text parsed, counting every
+// inclusion of a file: a few lines that include a file twice, which includes
+// another twice, ... would otherwise expand exponentially. Also the largest
+// single file read.
+constexpr const char* kMaxSceneBytesText = "256 MiB";
+constexpr int kMinResolution = 1;
+constexpr int kMaxResolution = 32768;
+constexpr std::uint64_t kMaxPolygonVertices = std::numeric_limits<std::uint32_t>::max();
+// Groups open at once. Each costs a saved material and transform (about 400
+// bytes), so without a limit a file of nothing but `push` would need 80 times
+// its size in memory.
+constexpr std::size_t kMaxGroupDepth = 100000;
+
+// ---------------------------------------------------------------------------
+// Parser
+
+// Unwinds the parse once the diagnostic cap is reached, or after an error
+// that would bury the rest under follow-up errors.
+struct StopParsing {};
+
+struct Location {
+  std::string file;
+  int line = 1;
+  int column = 1;
+
+  std::string text() const {
+    return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+  }
+};
+
+// A numeric argument and the token it was read from (for messages).
+struct Arg {
+  double value = 0.0;
+  Token token;
+};
+
+// One command being parsed.
+struct Command {
+  Token keyword;
+  std::string name;  // the keyword, for messages
+  bool valid = true; // false once an argument broke a constraint: not applied
+};
+
+Vec3 vec(const Arg* a) { return Vec3(a[0].value, a[1].value, a[2].value); }
+
+// True when the transform turns space inside out, so counterclockwise vertex order
+// becomes clockwise. The sign of the determinant of the unit-length columns: the
+// determinant itself can underflow to zero for tiny scales.
+bool mirrors(const Transform& t) {
+  Mat3 m = t.linear();
+  for (int i = 0; i < 3; ++i) {
+    m[i] /= glm::length(m[i]);
+  }
+  return glm::determinant(m) < 0.0;
+}
+
+template <int N> bool allFinite(const glm::mat<N, N, double>& m) {
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) {
+      if (!std::isfinite(m[i][j])) return false;
+    }
+  }
+  return true;
+}
+
+using MaterialKey = std::array<double, 8>;
+
+MaterialKey keyOf(const Material& m) {
+  return {m.color.r, m.color.g, m.color.b, m.kdr, m.ksr, m.kst, m.e, m.ir};
+}
+
+// Agrees with the == of MaterialKey, which takes -0 and 0 as equal.
+struct MaterialKeyHash {
+  std::size_t operator()(const MaterialKey& key) const {
+    std::uint64_t h = 0;
+    for (const double v : key) {
+      std::uint64_t bits = 0;
+      const double positiveZero = v + 0.0; // -0 + 0 is +0
+      std::memcpy(&bits, &positiveZero, sizeof bits);
+      h = mix(h ^ bits);
+    }
+    return std::size_t(h);
+  }
+  // The splitmix64 finaliser: every input bit affects every output bit.
+  static std::uint64_t mix(std::uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+};
+
+class Parser {
+public:
+  Scene run(std::string_view text, const std::string& name);
+
+private:
+  using Handler = void (Parser::*)(Command&);
+  struct Keyword {
+    std::string_view name;
+    Handler handler;
+  };
+  static const std::array<Keyword, 20> kKeywords;
+  static Handler handlerFor(std::string_view name);
+
+  // One file being parsed; they nest through `include`.
+  struct SourceFile {
+    std::string name; // as the user named it, for diagnostics
+    fs::path identity;
+    std::uint32_t index = 0; // into Scene::files
+    Lexer lexer;
+    std::size_t savedAtEntry = 0; // saved_.size() when the file began
+  };
+
+  // What `push` saves and `pop` restores.
+  struct Saved {
+    Material material;
+    std::optional<std::uint32_t> materialIndex;
+    Transform transform;
+    std::uint32_t group = 0;
+    Location pushedAt;
+  };
+
+  void parseFile(std::string_view text, const std::string& name, const fs::path& identity,
+                 std::uint32_t index);
+  void command();
+  void closeOpenPushes();
+  void checkCamera();
+
+  // Diagnostics and recovery.
+  void report(Location at, std::string message);
+  void error(const Token& at, std::string message) {
+    report({file().name, at.line, at.column}, std::move(message));
+  }
+  void invalid(Command& c, const Token& at, const std::string& message) {
+    c.valid = false;
+    error(at, c.name + ": " + message);
+  }
+  void resync();
+  void skipNumbers();
+
+  // Arguments. Each returns false when the argument is missing (already reported
+  // and the input resynchronised); the command must then stop reading.
+  bool argumentToken(Command& c, const char* name, const char* kind, Token& out);
+  bool number(Command& c, const char* name, Arg& out);
+  template <std::size_t N> bool numbers(Command& c, const char* const (&names)[N], Arg (&out)[N]) {
+    for (std::size_t i = 0; i < N; ++i) {
+      if (!number(c, names[i], out[i])) return false;
+    }
+    return true;
+  }
+  void requireNonNegative(Command& c, const Arg& a, const char* name);
+  void requireColor(Command& c, const Arg* rgb);
+  bool once(Command& c);
+
+  // Commands.
+  void eye(Command& c) { cameraPoint(c, scene_.camera.eye, true); }
+  void lookat(Command& c) { cameraPoint(c, scene_.camera.lookat, true); }
+  void up(Command& c) { cameraPoint(c, scene_.camera.up, false); }
+  void cameraPoint(Command& c, Vec3& target, bool isPoint);
+  void fov(Command& c);
+  void resolution(Command& c);
+  void background(Command& c) { globalColor(c, scene_.background); }
+  void ambient(Command& c) { globalColor(c, scene_.ambient); }
+  void globalColor(Command& c, Color& target);
+  void light(Command& c);
+  void surface(Command& c);
+  void sphere(Command& c);
+  void polygon(Command& c);
+  void cone(Command& c);
+  void triangle(Command& c);
+  void ptriangle(Command& c);
+  void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals);
+  void push(Command& c);
+  void pop(Command& c);
+  void translate(Command& c);
+  void scale(Command& c);
+  void rotate(Command& c);
+  void include(Command& c);
+
+  // State.
+  SourceFile& file() { return *files_.back(); }
+  Origin origin(const Command& c) { return {file().index, std::uint32_t(c.keyword.line)}; }
+  std::uint32_t currentMaterial();
+  void addPrimitive(PrimitiveKind kind, std::size_t index);
+  void compose(Command& c, const Transform& t);
+  std::optional<std::string> readInclude(const fs::path& path, const fs::path& identity,
+                                         const std::string*& text);
+  std::uint32_t fileIndex(const fs::path& identity, const std::string& name);
+  struct ResolvedInclude {
+    fs::path path;     // relative to the including file's folder, normalised
+    std::string name;  // path as a string, for messages and Scene::files
+    fs::path identity; // identityOf(path)
+  };
+  const ResolvedInclude& resolveInclude(std::string_view raw);
+
+  Scene scene_;
+  std::vector<Diagnostic> diagnostics_;
+
+  Material material_;
+  std::optional<std::uint32_t> materialIndex_; // material_ interned, once a primitive used it
+  std::unordered_map<MaterialKey, std::uint32_t, MaterialKeyHash> materialIds_;
+  Transform transform_;
+  std::uint32_t group_ = 0;
+  std::vector<Saved> saved_;
+
+  std::vector<std::unique_ptr<SourceFile>> files_;            // the include stack, main file first
+  std::map<fs::path, std::string> contents_;                  // every included file, read once
+  std::unordered_map<std::string, ResolvedInclude> includes_; // by including file and PATH
+  std::map<fs::path, std::uint32_t> fileIndices_;
+  std::size_t parsedBytes_ = 0;
+
+  std::map<std::string, Location> firstGiven_; // commands allowed once, by name
+  bool cameraBroken_ = false;  // an eye/lookat/up was rejected: skip the camera checks
+  std::vector<Vec3> vertices_; // scratch for polygon
+};
+
+const std::array<Parser::Keyword, 20> Parser::kKeywords = {{
+    {"eye", &Parser::eye},
+    {"lookat", &Parser::lookat},
+    {"up", &Parser::up},
+    {"fov", &Parser::fov},
+    {"resolution", &Parser::resolution},
+    {"background", &Parser::background},
+    {"ambient", &Parser::ambient},
+    {"light", &Parser::light},
+    {"surface", &Parser::surface},
+    {"sphere", &Parser::sphere},
+    {"polygon", &Parser::polygon},
+    {"cone", &Parser::cone},
+    {"triangle", &Parser::triangle},
+    {"ptriangle", &Parser::ptriangle},
+    {"push", &Parser::push},
+    {"pop", &Parser::pop},
+    {"translate", &Parser::translate},
+    {"scale", &Parser::scale},
+    {"rotate", &Parser::rotate},
+    {"include", &Parser::include},
+}};
+
+Parser::Handler Parser::handlerFor(std::string_view name) {
+  for (const Keyword& k : kKeywords) {
+    if (k.name == name) return k.handler;
+  }
+  return nullptr;
+}
+
+Scene Parser::run(std::string_view text, const std::string& name) {
+  const fs::path identity = identityOf(name);
+  try {
+    parsedBytes_ = text.size();
+    parseFile(text, name, identity, fileIndex(identity, name));
+    checkCamera();
+  } catch (const StopParsing&) {
+  }
+  if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
+  return std::move(scene_);
+}
+
+void Parser::parseFile(std::string_view text, const std::string& name, const fs::path& identity,
+                       std::uint32_t index) {
+  files_.push_back(
+      std::make_unique<SourceFile>(SourceFile{name, identity, index, Lexer(text), saved_.size()}));
+  while (!file().lexer.peek().atEnd()) {
+    command();
+  }
+  closeOpenPushes();
+  files_.pop_back();
+}
+
+void Parser::command() {
+  const Token token = file().lexer.next();
+  if (const Handler handler = handlerFor(token.text)) {
+    Command c{token, std::string(token.text)};
+    (this->*handler)(c);
+    return;
+  }
+  if (isNumber(token.text)) {
+    error(token, "expected a command but found the number " + quoted(token.text) +
+                     " (too many numbers for the command before it?)");
+  } else {
+    std::string lower(token.text);
+    for (char& ch : lower) {
+      ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    }
+    const bool caseOnly = handlerFor(lower) != nullptr;
+    error(token, "unknown keyword " + quoted(token.text) +
+                     (caseOnly ? " (keywords are lower case: '" + lower + "')" : ""));
+  }
+  skipNumbers();
+}
+
+// Each push still open when its file ends is an error; the state is restored to
+// what it was before the outermost of them, so the including file continues
+// with the material, transform and group it had.
+void Parser::closeOpenPushes() {
+  const std::size_t base = file().savedAtEntry;
+  if (saved_.size() == base) return;
+  for (std::size_t i = base; i < saved_.size(); ++i) {
+    report(saved_[i].pushedAt, "push without matching pop");
+  }
+  const Saved& outer = saved_[base];
+  material_ = outer.material;
+  materialIndex_ = outer.materialIndex;
+  transform_ = outer.transform;
+  group_ = outer.group;
+  saved_.resize(base);
+}
+
+void Parser::report(Location at, std::string message) {
+  if (diagnostics_.size() >= kMaxDiagnostics) {
+    diagnostics_.push_back({std::move(at.file), at.line, at.column, "too many errors; giving up"});
+    throw StopParsing{};
+  }
+  diagnostics_.push_back({std::move(at.file), at.line, at.column, std::move(message)});
+}
+
+// After a missing or malformed argument: drop the offending token unless it starts
+// the next command, then the numbers that belonged to the broken command.
+void Parser::resync() {
+  const Token& token = file().lexer.peek();
+  if (!token.atEnd() && handlerFor(token.text) == nullptr) file().lexer.next();
+  skipNumbers();
+}
+
+void Parser::skipNumbers() {
+  Lexer& lexer = file().lexer;
+  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text)) {
+    lexer.next();
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Arguments
+
+bool Parser::argumentToken(Command& c, const char* name, const char* kind, Token& out) {
+  out = file().lexer.peek();
+  if (out.atEnd()) {
+    error(c.keyword, c.name + ": expected " + name + " but reached the end of the file");
+    return false;
+  }
+  if (!isNumber(out.text)) {
+    error(out, c.name + ": expected " + name + " (" + kind + ") but found " + quoted(out.text));
+    resync();
+    return false;
+  }
+  file().lexer.next();
+  return true;
+}
+
+bool Parser::number(Command& c, const char* name, Arg& out) {
+  if (!argumentToken(c, name, "a number", out.token)) return false;
+  if (parseNumber(out.token.text, out.value) == NumberKind::NonFinite) {
+    invalid(c, out.token,
+            std::string(name) + " is not a finite number (" + quoted(out.token.text) + ")");
+    // NaN fails every later range check silently: one message per bad argument.
+    out.value = std::numeric_limits<double>::quiet_NaN();
+  }
+  return true;
+}
+
+void Parser::requireNonNegative(Command& c, const Arg& a, const char* name) {
+  if (a.value < 0.0) {
+    invalid(c, a.token, std::string(name) + " must not be negative, found " + quoted(a.token.text));
+  }
+}
+
+void Parser::requireColor(Command& c, const Arg* rgb) {
+  static constexpr const char* kNames[] = {"R", "G", "B"};
+  for (int i = 0; i < 3; ++i) {
+    requireNonNegative(c, rgb[i], kNames[i]);
+  }
+}
+
+// Camera and image commands may be given once in the whole scene.
+bool Parser::once(Command& c) {
+  const Location here{file().name, c.keyword.line, c.keyword.column};
+  const auto [first, inserted] = firstGiven_.try_emplace(c.name, here);
+  if (!inserted) {
+    c.valid = false;
+    error(c.keyword, "duplicate '" + c.name + "' (first given at " + first->second.text() + ")");
+  }
+  return inserted;
+}
+
+// ---------------------------------------------------------------------------
+// Camera and global commands
+
+void Parser::cameraPoint(Command& c, Vec3& target, bool isPoint) {
+  const bool first = once(c);
+  Arg a[3];
+  if (!numbers(c, {"X", "Y", "Z"}, a)) {
+    cameraBroken_ = cameraBroken_ || first;
+    return;
+  }
+  if (c.valid && isPoint && !withinModelRange(vec(a))) {
+    invalid(c, a[0].token, std::string("the point must be within +-") + kMaxCoordinateText);
+  }
+  if (c.valid) target = vec(a);
+  if (first && !c.valid) cameraBroken_ = true;
+}
+
+void Parser::fov(Command& c) {
+  once(c);
+  Arg a;
+  if (!number(c, "DEGREES", a)) return;
+  if (c.valid && !(a.value > 0.0 && a.value < 180.0)) {
+    invalid(c, a.token,
+            "DEGREES must be greater than 0 and less than 180, found " + quoted(a.token.text));
+  }
+  if (c.valid) scene_.camera.fov = a.value;
+}
+
+void Parser::resolution(Command& c) {
+  once(c);
+  int size[2] = {0, 0};
+  static constexpr const char* kNames[] = {"W", "H"};
+  for (int i = 0; i < 2; ++i) {
+    Token token;
+    if (!argumentToken(c, kNames[i], "an integer", token)) return;
+    const std::optional<std::uint64_t> value = parseInteger(token.text);
+    if (!value || *value < std::uint64_t(kMinResolution) ||
+        *value > std::uint64_t(kMaxResolution)) {
+      invalid(c, token,
+              std::string(kNames[i]) + " must be an integer from " +
+                  std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) +
+                  ", found " + quoted(token.text));
+    } else {
+      size[i] = int(*value);
+    }
+  }
+  if (!c.valid) return;
+  scene_.width = size[0];
+  scene_.height = size[1];
+}
+
+void Parser::globalColor(Command& c, Color& target) {
+  once(c);
+  Arg a[3];
+  if (!numbers(c, {"R", "G", "B"}, a)) return;
+  requireColor(c, a);
+  if (c.valid) target = vec(a);
+}
+
+void Parser::light(Command& c) {
+  Arg a[6];
+  if (!numbers(c, {"X", "Y", "Z", "R", "G", "B"}, a)) return;
+  requireColor(c, a + 3);
+  if (!c.valid) return;
+  const Vec3 position = transform_.point(vec(a));
+  if (!withinModelRange(position)) {
+    error(c.keyword, outsideModelRangeMessage("light"));
+    return;
+  }
+  scene_.lights.push_back({position, vec(a + 3)});
+}
+
+void Parser::surface(Command& c) {
+  static constexpr const char* kNames[] = {"R", "G", "B", "KDR", "KSR", "KST", "E", "IR"};
+  Arg a[8];
+  if (!numbers(c, kNames, a)) return;
+  for (int i = 0; i < 7; ++i) {
+    requireNonNegative(c, a[i], kNames[i]);
+  }
+  if (a[7].value <= 0.0) {
+    invalid(c, a[7].token, "IR must be positive, found " + quoted(a[7].token.text));
+  }
+  if (!c.valid) return;
+  material_ = Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value};
+  materialIndex_.reset();
+}
+
+// ---------------------------------------------------------------------------
+// Primitives
+
+// Interns the current material on first use: identical materials share one entry.
+std::uint32_t Parser::currentMaterial() {
+  if (materialIndex_) return *materialIndex_;
+  const auto [it, inserted] =
+      materialIds_.try_emplace(keyOf(material_), std::uint32_t(scene_.materials.size()));
+  if (inserted) scene_.materials.push_back(material_);
+  materialIndex_ = it->second;
+  return it->second;
+}
+
+void Parser::addPrimitive(PrimitiveKind kind, std::size_t index) {
+  scene_.groups[group_].primitives.push_back({kind, std::uint32_t(index)});
+}
+
+void Parser::sphere(Command& c) {
+  Arg a[4];
+  if (!numbers(c, {"X", "Y", "Z", "RADIUS"}, a)) return;
+  const Arg& r = a[3];
+  if (r.value < 0.0) invalid(c, r.token, "negative radius " + quoted(r.token.text));
+  if (r.value == 0.0) invalid(c, r.token, "radius must be positive, found " + quoted(r.token.text));
+  if (!c.valid) return;
+
+  const Vec3 center = transform_.point(vec(a));
+  double s = 1.0;
+  if (transform_.isSimilarity(&s)) {
+    const double radius = r.value * s;
+    if (!(radius > 0.0)) {
+      error(c.keyword, "sphere: too small after the current transform");
+      return;
+    }
+    const Sphere sphere{center, radius, currentMaterial(), origin(c)};
+    if (!withinModelRange(boundsOf(sphere))) {
+      error(c.keyword, outsideModelRangeMessage("sphere"));
+      return;
+    }
+    scene_.spheres.push_back(sphere);
+    addPrimitive(PrimitiveKind::Sphere, scene_.spheres.size() - 1);
+    return;
+  }
+  // A non-uniform scale makes it the image of the unit sphere under x -> L (r x) + center.
+  const Mat3 linear = transform_.linear() * r.value;
+  if (!allFinite(linear)) {
+    error(c.keyword, outsideModelRangeMessage("sphere"));
+    return;
+  }
+  Ellipsoid e = makeEllipsoid(linear, center);
+  if (!allFinite(e.worldToObject)) {
+    error(c.keyword, "sphere: too small after the current transform");
+    return;
+  }
+  if (!withinModelRange(e.bounds)) {
+    error(c.keyword, outsideModelRangeMessage("sphere"));
+    return;
+  }
+  e.material = currentMaterial();
+  e.origin = origin(c);
+  scene_.ellipsoids.push_back(e);
+  addPrimitive(PrimitiveKind::Ellipsoid, scene_.ellipsoids.size() - 1);
+}
+
+void Parser::polygon(Command& c) {
+  Token countToken;
+  if (!argumentToken(c, "N", "an integer", countToken)) return;
+  const std::optional<std::uint64_t> count = parseInteger(countToken.text);
+  if (!count || *count < 3 || *count > kMaxPolygonVertices) {
+    error(countToken, "polygon: N must be an integer from 3 to " +
+                          std::to_string(kMaxPolygonVertices) + ", found " +
+                          quoted(countToken.text));
+    skipNumbers();
+    return;
+  }
+  // Vertices are read as they come, never reserved from N: a hostile N costs
+  // nothing until the numbers are actually there.
+  const std::uint64_t wanted = 3 * *count;
+  vertices_.clear();
+  Vec3 vertex(0.0);
+  for (std::uint64_t found = 0; found < wanted; ++found) {
+    Lexer& lexer = file().lexer;
+    const Token token = lexer.peek();
+    double value = 0.0;
+    const NumberKind kind = token.atEnd() ? NumberKind::NotANumber : parseNumber(token.text, value);
+    if (kind == NumberKind::NotANumber) {
+      const std::string expected = "polygon: expected " + std::to_string(wanted) + " numbers for " +
+                                   std::to_string(*count) + " vertices, found " +
+                                   std::to_string(found);
+      if (token.atEnd()) {
+        error(c.keyword, expected + " before the end of the file");
+      } else {
+        error(token, expected + " before " + quoted(token.text));
+        resync();
+      }
+      return;
+    }
+    lexer.next();
+    const int axis = int(found % 3);
+    if (kind == NumberKind::NonFinite) {
+      const std::string name = std::string(1, "XYZ"[axis]) + std::to_string(found / 3 + 1);
+      invalid(c, token, name + " is not a finite number (" + quoted(token.text) + ")");
+    }
+    vertex[axis] = value;
+    if (axis == 2) vertices_.push_back(transform_.point(vertex));
+  }
+  if (!c.valid) return;
+  // A mirroring transform would turn the counterclockwise order, and with it the
+  // outward normal, inside out.
+  if (mirrors(transform_)) std::reverse(vertices_.begin(), vertices_.end());
+  for (const Vec3& v : vertices_) {
+    if (!withinModelRange(v)) {
+      error(c.keyword, outsideModelRangeMessage("polygon"));
+      return;
+    }
+  }
+  if (const std::optional<std::string> problem = polygonProblem(vertices_)) {
+    error(c.keyword, "polygon: " + *problem);
+    return;
+  }
+  addPolygon(scene_, vertices_, currentMaterial(), origin(c), group_);
+}
+
+void Parser::cone(Command& c) {
+  static constexpr const char* kNames[] = {"BX", "BY", "BZ", "BR", "AX", "AY", "AZ", "AR"};
+  Arg a[8];
+  if (!numbers(c, kNames, a)) return;
+  for (const int i : {3, 7}) {
+    if (a[i].value < 0.0) invalid(c, a[i].token, "negative radius " + quoted(a[i].token.text));
+  }
+  if (!c.valid) return;
+  const Vec3 base = vec(a), apex = vec(a + 4);
+  if (const std::optional<std::string> problem = coneProblem(base, a[3].value, apex, a[7].value)) {
+    error(c.keyword, "cone: " + *problem);
+    return;
+  }
+  Cone cone = makeCone(base, a[3].value, apex, a[7].value, transform_.linear(),
+                       transform_.point(Vec3(0.0)));
+  if (!allFinite(cone.worldToObject) || !isFinite(cone.worldToObjectOffset)) {
+    error(c.keyword, "cone: too large or too small after the current transform");
+    return;
+  }
+  if (!withinModelRange(cone.bounds)) {
+    error(c.keyword, outsideModelRangeMessage("cone"));
+    return;
+  }
+  cone.material = currentMaterial();
+  cone.origin = origin(c);
+  scene_.cones.push_back(cone);
+  addPrimitive(PrimitiveKind::Cone, scene_.cones.size() - 1);
+}
+
+void Parser::triangle(Command& c) {
+  static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "X2", "Y2", "Z2", "X3", "Y3", "Z3"};
+  Arg a[9];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  addTriangle(c, {vec(a), vec(a + 3), vec(a + 6)}, nullptr);
+}
+
+void Parser::ptriangle(Command& c) {
+  static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "NX1", "NY1", "NZ1",
+                                           "X2", "Y2", "Z2", "NX2", "NY2", "NZ2",
+                                           "X3", "Y3", "Z3", "NX3", "NY3", "NZ3"};
+  Arg a[18];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  std::array<Vec3, 3> normals;
+  for (int i = 0; i < 3; ++i) {
+    normals[i] = vec(a + 6 * i + 3);
+    if (normals[i] == Vec3(0.0)) {
+      invalid(c, a[6 * i + 3].token,
+              "N" + std::to_string(i + 1) + " (NX" + std::to_string(i + 1) + " NY" +
+                  std::to_string(i + 1) + " NZ" + std::to_string(i + 1) +
+                  ") must not be the zero vector");
+    }
+  }
+  if (!c.valid) return;
+  addTriangle(c, {vec(a), vec(a + 6), vec(a + 12)}, &normals);
+}
+
+// Places a triangle (and its vertex normals, if any) through the current
+// transform and stores it in the scene's mesh arrays.
+void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals) {
+  std::array<Vec3, 3> n;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = transform_.point(v[i]);
+    if (!withinModelRange(v[i])) {
+      error(c.keyword, outsideModelRangeMessage(c.name));
+      return;
+    }
+    if (normals != nullptr) {
+      // Normals move by the inverse transpose; scaled before normalising so
+      // that a tiny or huge one cannot under- or overflow.
+      const Vec3 moved = transform_.normal((*normals)[i] / maxAbsComponent((*normals)[i]));
+      n[i] = glm::normalize(moved / maxAbsComponent(moved));
+      if (!isFinite(n[i])) {
+        error(c.keyword, c.name + ": vertex normal is not finite after the current transform");
+        return;
+      }
+    }
+  }
+  // A mirror turns the counterclockwise order inside out; the normals stay
+  // outward by themselves (the inverse transpose mirrors them too).
+  if (mirrors(transform_)) {
+    std::swap(v[1], v[2]);
+    std::swap(n[1], n[2]);
+  }
+  if (const std::optional<std::string> problem = triangleProblem(v[0], v[1], v[2])) {
+    error(c.keyword, c.name + ": " + *problem);
+    return;
+  }
+  Triangle t;
+  for (int i = 0; i < 3; ++i) {
+    t.vertex[std::size_t(i)] = std::uint32_t(scene_.meshVertices.size());
+    scene_.meshVertices.push_back(v[i]);
+    if (normals != nullptr) {
+      t.normal[std::size_t(i)] = std::uint32_t(scene_.meshNormals.size());
+      scene_.meshNormals.push_back(n[i]);
+    }
+  }
+  t.material = currentMaterial();
+  t.origin = origin(c);
+  scene_.triangles.push_back(t);
+  addPrimitive(PrimitiveKind::Triangle, scene_.triangles.size() - 1);
+}
+
+// ---------------------------------------------------------------------------
+// Hierarchy and transforms
+
+void Parser::push(Command& c) {
+  if (saved_.size() >= kMaxGroupDepth) {
+    // Every later pop would be reported as unmatched: stop here.
+    error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
+    throw StopParsing{};
+  }
+  saved_.push_back({material_, materialIndex_, transform_, group_,
+                    Location{file().name, c.keyword.line, c.keyword.column}});
+  const auto child = std::uint32_t(scene_.groups.size());
+  Group group;
+  group.origin = origin(c);
+  scene_.groups.push_back(std::move(group));
+  scene_.groups[group_].children.push_back(child);
+  group_ = child;
+}
+
+void Parser::pop(Command& c) {
+  if (saved_.size() == file().savedAtEntry) {
+    error(c.keyword, saved_.empty() ? "pop without matching push"
+                                    : "pop without matching push in this file (push and pop "
+                                      "must balance within each file)");
+    return;
+  }
+  const Saved& s = saved_.back();
+  material_ = s.material;
+  materialIndex_ = s.materialIndex;
+  transform_ = s.transform;
+  group_ = s.group;
+  saved_.pop_back();
+}
+
+// Composes `t` onto the current transform unless the result is no longer usable
+// (entries or inverse overflowing after many large or tiny scales).
+void Parser::compose(Command& c, const Transform& t) {
+  const Transform next = transform_ * t;
+  if (!allFinite(next.matrix()) || !allFinite(next.inverse())) {
+    error(c.keyword,
+          c.name + ": the current transform would become degenerate (too large or too small)");
+    return;
+  }
+  transform_ = next;
+}
+
+void Parser::translate(Command& c) {
+  Arg a[3];
+  if (!numbers(c, {"X", "Y", "Z"}, a) || !c.valid) return;
+  compose(c, Transform::translate(vec(a)));
+}
+
+void Parser::scale(Command& c) {
+  static constexpr const char* kNames[] = {"X", "Y", "Z"};
+  Arg a[3];
+  if (!numbers(c, kNames, a)) return;
+  for (int i = 0; i < 3; ++i) {
+    if (a[i].value == 0.0) {
+      invalid(c, a[i].token,
+              std::string(kNames[i]) + " must not be zero, found " + quoted(a[i].token.text));
+    }
+  }
+  if (c.valid) compose(c, Transform::scale(vec(a)));
+}
+
+void Parser::rotate(Command& c) {
+  Arg a[4];
+  if (!numbers(c, {"AX", "AY", "AZ", "DEGREES"}, a)) return;
+  const Vec3 axis = vec(a);
+  if (c.valid && axis == Vec3(0.0)) invalid(c, a[0].token, "the axis (AX AY AZ) must not be zero");
+  if (!c.valid) return;
+  // Scaled first so that normalising a tiny or huge axis cannot under- or overflow.
+  compose(c, Transform::rotate(axis / maxAbsComponent(axis), a[3].value));
+}
+
+// ---------------------------------------------------------------------------
+// Include
+
+std::uint32_t Parser::fileIndex(const fs::path& identity, const std::string& name) {
+  const auto [it, inserted] =
+      fileIndices_.try_emplace(identity, std::uint32_t(scene_.files.size()));
+  if (inserted) scene_.files.push_back(name);
+  return it->second;
+}
+
+// Where an `include PATH` in the current file leads. identityOf costs several
+// system calls (it resolves links) and path arithmetic is slow too; a part
+// included 10^5 times (a leaf of a tree) is resolved once per scene, like its
+// text is read once.
+const Parser::ResolvedInclude& Parser::resolveInclude(std::string_view raw) {
+  std::string key = file().name;
+  key += '\0';
+  key += raw;
+  auto it = includes_.find(key);
+  if (it == includes_.end()) {
+    ResolvedInclude r;
+    r.path = (fs::path(file().name).parent_path() / fs::path(raw)).lexically_normal();
+    r.name = r.path.string();
+    r.identity = identityOf(r.path);
+    it = includes_.emplace(std::move(key), std::move(r)).first;
+  }
+  return it->second;
+}
+
+// The contents of an included file, read at most once per scene.
+std::optional<std::string> Parser::readInclude(const fs::path& path, const fs::path& identity,
+                                               const std::string*& text) {
+  if (const auto it = contents_.find(identity); it != contents_.end()) {
+    text = &it->second;
+    return std::nullopt;
+  }
+  std::string contents;
+  if (std::optional<std::string> problem = readFile(path, true, contents)) return problem;
+  text = &contents_.emplace(identity, std::move(contents)).first->second;
+  return std::nullopt;
+}
+
+void Parser::include(Command& c) {
+  const Token token = file().lexer.nextPath();
+  if (token.atEnd()) {
+    error(c.keyword, "include: expected PATH but reached the end of the file");
+    return;
+  }
+  std::string_view raw = token.text;
+  if (raw.front() == '"') {
+    if (raw.size() < 2 || raw.back() != '"') {
+      error(token, "include: PATH has no closing '\"' on its line");
+      skipNumbers();
+      return;
+    }
+    raw = raw.substr(1, raw.size() - 2);
+  }
+  if (raw.empty()) {
+    error(token, "include: PATH is empty");
+    skipNumbers();
+    return;
+  }
+  const ResolvedInclude& resolved = resolveInclude(raw);
+  const fs::path& path = resolved.path;
+  const std::string& name = resolved.name;
+  const fs::path& identity = resolved.identity;
+
+  for (std::size_t i = 0; i < files_.size(); ++i) {
+    if (files_[i]->identity != identity) continue;
+    std::string cycle = "include cycle: ";
+    for (std::size_t j = i; j < files_.size(); ++j) {
+      cycle += files_[j]->name + " -> ";
+    }
+    error(token, cycle + name);
+    skipNumbers();
+    return;
+  }
+  if (files_.size() >= kMaxIncludeDepth) {
+    error(token, "include: files nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
+    skipNumbers();
+    return;
+  }
+  const std::string* text = nullptr;
+  if (const std::optional<std::string> problem = readInclude(path, identity, text)) {
+    error(token, "cannot read '" + name + "': " + *problem);
+    skipNumbers();
+    return;
+  }
+  if (parsedBytes_ + text->size() > kMaxSceneBytes) {
+    error(token, std::string("include: the scene text, counting every inclusion, exceeds ") +
+                     kMaxSceneBytesText);
+    skipNumbers();
+    return;
+  }
+  parsedBytes_ += text->size();
+  parseFile(*text, name, identity, fileIndex(identity, name));
+}
+
+// ---------------------------------------------------------------------------
+// Camera checks, once the whole scene is known
+
+void Parser::checkCamera() {
+  if (cameraBroken_) return;
+  const Location mainStart{scene_.files[0], 1, 1};
+  const auto given = [&](const char* name) -> const Location* {
+    const auto it = firstGiven_.find(name);
+    return it == firstGiven_.end() ? nullptr : &it->second;
+  };
+  const Location* view = given("lookat") ? given("lookat") : given("eye");
+  const Location& viewAt = view ? *view : mainStart;
+  const Location& upAt = given("up") ? *given("up") : viewAt;
+
+  // The same computation as Camera's constructor, so that it cannot produce NaN.
+  const CameraSpec& camera = scene_.camera;
+  const Vec3 direction = camera.lookat - camera.eye;
+  if (direction == Vec3(0.0)) {
+    report(viewAt, "eye and lookat are the same point, so there is no view direction");
+    return;
+  }
+  const Vec3 forward = glm::normalize(direction);
+  if (!isFinite(forward)) {
+    report(viewAt, "eye and lookat are too close together or too far apart to give a view "
+                   "direction");
+    return;
+  }
+  if (camera.up == Vec3(0.0)) {
+    report(upAt, "up must not be the zero vector");
+    return;
+  }
+  // The sine of the angle between up and the view direction; 1e-9 catches what is
+  // parallel up to round-off. (Scaled before normalising so that it cannot underflow.)
+  const Vec3 unitUp = glm::normalize(camera.up / maxAbsComponent(camera.up));
+  if (glm::length(glm::cross(forward, unitUp)) < 1e-9) {
+    report(upAt, "up is parallel to the view direction (from eye to lookat)");
+    return;
+  }
+  if (!isFinite(glm::normalize(glm::cross(forward, camera.up)))) {
+    report(upAt, "up is too short to give a direction");
+  }
+}
+
+} // namespace
+
+Scene parseScene(std::string_view text, const std::string& name) {
+  return Parser().run(text, name);
+}
+
+Scene loadScene(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::string text;
+  if (const std::optional<std::string> problem = readFile(path, false, text)) {
+    throw SceneError({Diagnostic{name, 1, 1, "cannot read file: " + *problem}});
+  }
+  return parseScene(text, name);
+}
+
+} // namespace prism

@@ -1,0 +1,43 @@
+// Reads the .sc scene language of SPEC 4 into a Scene. Every problem found is
+// reported as a Diagnostic with file, line and column; the parser collects all
+// of them it can and then throws SceneError, never exits, so a previewer can show
+// the messages and keep its last good scene.
+#pragma once
+
+#include "core/scene/scene.h"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace prism {
+
+struct Diagnostic {
+  std::string file; // as the user named it (the include path for included files)
+  int line = 0;     // 1-based
+  int column = 0;   // 1-based, in bytes
+  std::string message;
+
+  // "FILE:LINE:COLUMN: error: MESSAGE"
+  std::string format() const;
+};
+
+class SceneError : public std::runtime_error {
+public:
+  explicit SceneError(std::vector<Diagnostic> diagnostics);
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+private:
+  std::vector<Diagnostic> diagnostics_;
+};
+
+// Parses the file at `path`; includes are resolved relative to the including file.
+Scene loadScene(const std::filesystem::path& path);
+
+// Parses `text` as if it were the contents of a file named `name` (includes are
+// resolved relative to the directory of `name`). For tests and fuzzing.
+Scene parseScene(std::string_view text, const std::string& name);
+
+} // namespace prism

@@ -1,0 +1,128 @@
+#include "core/render/image_formation.h"
+
+#include <algorithm>
+
+namespace prism {
+
+namespace {
+
+// splitmix64: a small, well-mixed hash, so each (pixel, cell) has its own fixed
+// jitter whatever the order in which pixels are traced.
+std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+double unitFromBits(std::uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+double distanceSquared(const Rgb& a, const Rgb& b) {
+  const double dr = double(a.r) - double(b.r);
+  const double dg = double(a.g) - double(b.g);
+  const double db = double(a.b) - double(b.b);
+  return dr * dr + dg * dg + db * db;
+}
+
+} // namespace
+
+static_assert(kBundleSide * kBundleSide <= int(Accel::kMaxBundle));
+
+std::vector<Tile> splitTile(const Tile& tile, int size) {
+  std::vector<Tile> parts;
+  for (int y = tile.y0; y < tile.y1; y += size)
+    for (int x = tile.x0; x < tile.x1; x += size)
+      parts.push_back({x, y, std::min(x + size, tile.x1), std::min(y + size, tile.y1)});
+  return parts;
+}
+
+std::vector<Tile> makeTiles(int width, int height, int size) {
+  return splitTile({0, 0, width, height}, size);
+}
+
+void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pixel> pixels,
+                       std::span<Color> out, RayCounts& counts) {
+  Ray rays[Accel::kMaxBundle];
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+    rays[i] = camera.eyeRay(pixels[i].x + 0.5, pixels[i].y + 0.5);
+  counts.eyePrimary += (long long)pixels.size();
+  tracer.traceBundle(std::span(rays, pixels.size()), out.first(pixels.size()), counts);
+}
+
+void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
+                       RayCounts& counts) {
+  for (const Tile& block : splitTile(tile, kBundleSide)) {
+    Pixel pixels[Accel::kMaxBundle];
+    std::size_t n = 0;
+    for (int y = block.y0; y < block.y1; ++y)
+      for (int x = block.x0; x < block.x1; ++x)
+        pixels[n++] = {x, y};
+    Color colors[Accel::kMaxBundle];
+    tracePixelCentres(tracer, camera, std::span(pixels, n), colors, counts);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t index = film.index(pixels[i].x, pixels[i].y);
+      film.centre[index] = film.radiance[index] = toRgb(colors[i]);
+    }
+  }
+}
+
+double averageMax(const std::vector<Rgb>& radiance) {
+  if (radiance.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Rgb& c : radiance)
+    sum += double(std::max({c.r, c.g, c.b}));
+  return sum / double(radiance.size());
+}
+
+bool needsSupersampling(const Film& film, int x, int y, double avgmax, double thresh) {
+  const double limit = avgmax * thresh;
+  const double limit2 = limit * limit;
+  const Rgb& c = film.centre[film.index(x, y)];
+  auto differs = [&](int nx, int ny) {
+    return distanceSquared(c, film.centre[film.index(nx, ny)]) > limit2;
+  };
+  return (x > 0 && differs(x - 1, y)) || (x + 1 < film.width && differs(x + 1, y)) ||
+         (y > 0 && differs(x, y - 1)) || (y + 1 < film.height && differs(x, y + 1));
+}
+
+Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
+                     RayCounts& counts) {
+  const std::uint64_t pixelKey =
+      (std::uint64_t(std::uint32_t(y)) << 32) | std::uint64_t(std::uint32_t(x));
+  Ray rays[16];
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      double u = 0.5, v = 0.5;
+      if (jitter) {
+        const std::uint64_t h = mix(pixelKey ^ mix(std::uint64_t(j * 4 + i)));
+        u = unitFromBits(h);
+        v = unitFromBits(mix(h));
+      }
+      rays[j * 4 + i] = camera.eyeRay(x + (i + u) / 4.0, y + (j + v) / 4.0);
+    }
+  }
+  // The 16 rays share the eye: one bundle.
+  Color colors[16];
+  tracer.traceBundle(rays, colors, counts);
+  counts.eyeAntialias += 16;
+  Color sum(0.0);
+  for (const Color& c : colors)
+    sum += c;
+  return toRgb(sum / 16.0);
+}
+
+int antialiasTile(Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
+                  double thresh, bool jitter, Film& film, RayCounts& counts) {
+  int supersampled = 0;
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      if (!needsSupersampling(film, x, y, avgmax, thresh)) continue;
+      film.radiance[film.index(x, y)] = supersamplePixel(tracer, camera, x, y, jitter, counts);
+      film.supersampled[film.index(x, y)] = 1;
+      ++supersampled;
+    }
+  }
+  return supersampled;
+}
+
+} // namespace prism

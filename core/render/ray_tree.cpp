@@ -1,0 +1,65 @@
+#include "core/render/ray_tree.h"
+
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <string>
+
+namespace prism {
+
+namespace {
+
+std::string fmt(const Vec3& v) {
+  std::ostringstream s;
+  s << std::setprecision(6) << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return s.str();
+}
+
+void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, int indent) {
+  const std::string pad(std::size_t(indent) * 2, ' ');
+  out << pad << rayKindName(node.kind) << " ray, depth " << node.depth << ": origin "
+      << fmt(node.ray.origin) << " dir " << fmt(node.ray.dir) << "\n";
+  if (!node.hit) {
+    out << pad << "  misses everything: background " << fmt(node.radiance) << "\n";
+    return;
+  }
+  out << pad << "  hits " << scene.describe(node.where.primitive) << " at t = " << node.where.t
+      << ", point " << fmt(node.point) << "\n";
+  out << pad << "  outward normal " << fmt(node.normal) << ", "
+      << (node.leaving ? "leaving (N.D > 0)" : "entering (N.D <= 0)") << ", shading normal "
+      << fmt(node.shadingNormal) << "\n";
+  const Material& m = scene.material(node.where.primitive);
+  out << pad << "  material C " << fmt(m.color) << " kdr " << m.kdr << " ksr " << m.ksr << " kst "
+      << m.kst << " e " << m.e << " ir " << m.ir << "\n";
+  for (const LightTerm& t : node.lights) {
+    out << pad << "  light " << t.light << ": r = " << t.distance << ", N.L = " << t.cosine;
+    if (t.behind) {
+      out << ", behind the surface: s = 0, no shadow ray\n";
+    } else if (t.skipped) {
+      out << ", material reflects no light: no shadow ray\n";
+    } else if (t.shadowed) {
+      out << ", shadowed by " << scene.describe(t.blocker.primitive) << " at t = " << t.blocker.t
+          << ": s = 0\n";
+    } else {
+      out << ", lit: s = 1, diffuse I*N.L/r^2 = " << fmt(t.diffuse)
+          << ", specular I*(N.H)^e/r^2 = " << fmt(t.specular) << "\n";
+    }
+  }
+  out << pad << "  C kdr [Ia + sum diffuse] = " << fmt(node.ambientDiffuse) << "\n";
+  out << pad << "  ksr sum specular        = " << fmt(node.highlight) << "\n";
+  out << pad << "  ksr I_r                 = " << fmt(node.reflected) << "\n";
+  out << pad << "  kst I_t                 = " << fmt(node.transmitted)
+      << (node.totalInternalReflection ? "  (total internal reflection: no transmitted ray)" : "")
+      << "\n";
+  out << pad << "  radiance                = " << fmt(node.radiance) << "\n";
+  for (const RayTreeNode& child : node.children)
+    printNode(out, child, scene, indent + 1);
+}
+
+} // namespace
+
+void printRayTree(std::ostream& out, const RayTreeNode& root, const Scene& scene) {
+  printNode(out, root, scene, 0);
+}
+
+} // namespace prism

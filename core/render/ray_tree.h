@@ -1,0 +1,48 @@
+// The record of one traced ray and everything it spawned, kept only when asked
+// for (`prism render --pixel X Y`): every hit, each term of the shading formula
+// per light, and the secondary rays with their depth.
+#pragma once
+
+#include "core/accel/accel.h"
+
+#include <iosfwd>
+#include <vector>
+
+namespace prism {
+
+struct LightTerm {
+  int light = 0; // 1-based, as users number lights
+  double distance = 0.0;
+  double cosine = 0.0;   // N.L with the shading normal
+  bool behind = false;   // N.L <= 0 or zero distance: no shadow ray was cast
+  bool skipped = false;  // the material cannot reflect light: no shadow ray was cast
+  bool shadowed = false; // a shadow ray found a blocker before the light
+  Hit blocker;           // valid when shadowed
+  Color diffuse{0.0};    // I_i max(N.L,0) / r^2 (before C_mat kdr)
+  Color specular{0.0};   // I_i max(N.H,0)^e / r^2 (before ksr)
+};
+
+struct RayTreeNode {
+  RayKind kind = RayKind::Eye;
+  int depth = 1;
+  Ray ray;
+  bool hit = false;
+  Hit where;
+  Vec3 point{0.0};
+  Vec3 normal{0.0};        // outward
+  Vec3 shadingNormal{0.0}; // flipped to face the incoming ray
+  bool leaving = false;
+  bool totalInternalReflection = false;
+  std::vector<LightTerm> lights;
+  // The four terms of SPEC 1.1, already multiplied by their coefficients.
+  Color ambientDiffuse{0.0}; // C_mat kdr [I_a + sum diffuse]
+  Color highlight{0.0};      // ksr sum specular
+  Color reflected{0.0};      // ksr I_r
+  Color transmitted{0.0};    // kst I_t
+  Color radiance{0.0};
+  std::vector<RayTreeNode> children;
+};
+
+void printRayTree(std::ostream& out, const RayTreeNode& root, const Scene& scene);
+
+} // namespace prism

@@ -1,0 +1,164 @@
+// A progressive render that can be changed while it runs: what the previewer
+// shows and edits. It owns the scene, the settings, the film and the worker
+// threads, and runs the pass schedule
+//
+//   coarse levels (one pixel-centre sample per 8x8, then 4x4, 2x2, 1x1 block;
+//   each level traces only the centres the coarser ones did not)  = pass 1
+//   -> avgmax -> the adaptive antialiasing pass (pass 2)
+//
+// so every sample taken is a sample of the final picture: the coarse levels are
+// pass 1 in a different order, and the finished film is bit-for-bit what
+// render() produces with the same scene and settings.
+//
+// Every edit cancels the work in flight (workers check between rows, so this
+// takes milliseconds), applies the change and restarts from the first level;
+// results of cancelled work are never published. Workers publish finished
+// tiles under a short lock and bump a version number; a viewer polls version()
+// once per frame and copies the buffers only when it changed. No GL here.
+#pragma once
+
+#include "core/accel/accel.h"
+#include "core/render/film.h"
+#include "core/render/ray_counts.h"
+#include "core/render/renderer.h"
+#include "core/scene/scene.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+enum class SessionPhase {
+  Coarse,    // pass 1 in coarse-to-fine order; `level` says which block size
+  Antialias, // pass 2
+  Done,
+};
+
+// A consistent view of how far the render got, for live statistics.
+struct SessionProgress {
+  SessionPhase phase = SessionPhase::Coarse;
+  int level = 8;              // block size of the coarse level in progress (8, 4, 2, 1)
+  double fraction = 0.0;      // of the whole render (pass 1 and pass 2), 0..1
+  double pass1Fraction = 0.0; // of pass 1's pixel centres traced, 0..1
+  double pass2Fraction = 0.0; // of pass 2's tiles done, 0..1
+  double pass1Seconds = 0.0;  // how long pass 1 took, once it is complete
+  long long pass1Pixels = 0;  // pixel centres traced so far
+  long long supersampledPixels = 0;
+  double liveAvgmax = 0.0; // mean of max(r,g,b) over the pixel centres traced so far
+  // The same over the coarse levels completed so far (0 before the first): a
+  // uniform subsample of the image, so it does not drift with the order in
+  // which a level's tiles finish, as liveAvgmax does.
+  double levelsAvgmax = 0.0;
+  double avgmax = 0.0; // pass 1's avgmax once pass 1 is complete, else liveAvgmax
+  RayCounts counts;    // rays traced since the last restart
+  double elapsedSeconds = 0.0;
+  std::uint64_t restarts = 0; // how many times an edit restarted the render
+};
+
+// What the viewer draws: radiance filled so that every pixel shows the nearest
+// sample taken so far (a coarse sample covers its whole block), plus the mask
+// of supersampled pixels.
+struct SessionImage {
+  int width = 0;
+  int height = 0;
+  std::vector<Rgb> radiance;
+  std::vector<std::uint8_t> supersampled;
+  std::uint64_t version = 0;
+};
+
+// True when pixel (x, y) gets its centre sample at coarse `level` (8, 4, 2 or
+// 1): it lies on that level's grid and on no coarser one. Every pixel is new at
+// exactly one level, so the levels together are pass 1, each centre traced once.
+bool isNewAtLevel(int x, int y, int level);
+
+// Several values changed at once, with one restart: a dragged light, an undo
+// that puts back a camera and two lights, a reload re-applying the user's
+// edits. Unset members stay as they are.
+struct SessionEdit {
+  std::optional<RenderSettings> settings;
+  std::optional<CameraSpec> camera;
+  std::optional<Color> ambient;
+  std::vector<std::pair<std::size_t, Light>> lights; // 0-based index, new value
+
+  bool empty() const { return !settings && !camera && !ambient && lights.empty(); }
+};
+
+class RenderSession {
+public:
+  // Starts rendering at once.
+  RenderSession(Scene scene, const RenderSettings& settings, AccelKind accel = AccelKind::Bvh);
+  ~RenderSession(); // cancels and joins the workers
+
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
+
+  // Edits. Each one cancels the work in flight and restarts refinement, except
+  // that a change of only `thresh` or `jitter` keeps a completed pass 1 and
+  // redoes pass 2. An empty edit does nothing. Light indices are 0-based here
+  // (users see them from 1); one past the scene's lights throws
+  // std::out_of_range before anything is stopped or changed.
+  void apply(const SessionEdit& edit);
+  // One value each: apply() with that member set.
+  void setSettings(const RenderSettings& settings);
+  void setLight(std::size_t index, const Light& light);
+  void setAmbient(const Color& ambient);
+  void setCamera(const CameraSpec& camera);
+  // A reloaded scene: new geometry with its hierarchy, built by
+  // makeAccel(*scene, accelKind()) beforehand (on another thread: for 10^6
+  // primitives that takes a second).
+  void setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel);
+  AccelKind accelKind() const { return accelKind_; }
+
+  // The current state (copies; safe from any thread).
+  RenderSettings settings() const;
+  Scene sceneCopy() const;
+  const std::vector<Light>& lights() const { return scene_->lights; } // UI thread only
+  const Scene& scene() const { return *scene_; }                      // UI thread only
+  // The hierarchy the workers trace with (read-only, so any thread may trace
+  // with it too; replaced only by setScene, on the UI thread).
+  const Accel& accel() const { return *accel_; }
+
+  // Bumps whenever workers publish new samples or the session restarts.
+  std::uint64_t version() const { return version_.load(std::memory_order_acquire); }
+  // Copies the display buffers (only when `image.version` differs from version()).
+  // Returns true if it copied.
+  bool copyImage(SessionImage& image) const;
+  SessionProgress progress() const;
+  bool finished() const;
+
+  // Why the current render stopped early (out of memory, say), or "".
+  std::string failure() const;
+
+  // Blocks until the render is complete, then returns the finished film: the
+  // picture `prism render` would write (same samples, same avgmax). Throws
+  // std::runtime_error if the render failed.
+  RenderResult waitForResult();
+
+private:
+  struct Work; // one render generation: its film, counters and schedule
+
+  void stopWorkers();
+  void startWorkers(bool keepPass1);
+  void run(Work& work, bool keepPass1);
+
+  std::unique_ptr<Scene> scene_;
+  std::unique_ptr<Accel> accel_;
+  AccelKind accelKind_;
+  RenderSettings settings_;
+
+  mutable std::mutex mutex_; // guards work_'s published state
+  std::unique_ptr<Work> work_;
+  std::atomic<std::uint64_t> version_{1};
+  std::atomic<std::uint64_t> restarts_{0};
+  std::atomic<bool> cancel_{false};
+  std::jthread driver_;
+};
+
+} // namespace prism

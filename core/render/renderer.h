@@ -1,0 +1,43 @@
+// A complete render of SPEC 2 on all cores: pass 1 over tiles, avgmax, pass 2
+// over tiles. The picture is the same for any thread count: every pixel's value
+// depends only on the scene and settings, and counts are summed per worker.
+#pragma once
+
+#include "core/accel/accel.h"
+#include "core/render/film.h"
+#include "core/render/ray_counts.h"
+
+#include <functional>
+
+namespace prism {
+
+// What a render is asked to do. Every member restarts a render when changed.
+struct RenderSettings {
+  int width = 512; // pixels
+  int height = 512;
+  int maxDepth = 5;    // D >= 1; 1 is ray casting with shadows
+  double thresh = 0.1; // antialiasing threshold in [0, 1], a fraction of avgmax
+  bool jitter = false; // jitter sub-samples within their 4x4 cells
+  int threads = 0;     // 0: every hardware thread
+  int tileSize = 32;   // pixels per tile side: the unit of work
+};
+
+struct RenderProgress {
+  int pass = 1;          // 1: pixel centres, 2: adaptive antialiasing
+  double fraction = 0.0; // of the whole render, 0..1
+};
+
+struct RenderResult {
+  Film film;
+  double avgmax = 0.0;
+  RayCounts counts;
+  long long supersampledPixels = 0;
+};
+
+using ProgressCallback = std::function<void(const RenderProgress&)>;
+
+// `progress` is called from worker threads (one at a time) after each tile.
+RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                    const ProgressCallback& progress = {});
+
+} // namespace prism

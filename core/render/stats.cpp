@@ -1,0 +1,80 @@
+#include "core/render/stats.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace prism {
+
+namespace {
+std::string line(const char* format, auto... args) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, format, args...);
+  return buffer;
+}
+} // namespace
+
+std::string formatStatsText(const RenderStats& s) {
+  const RayCounts& c = s.counts;
+  std::string text;
+  text += line("scene               %s\n", s.scene.c_str());
+  text += line("machine             %s\n", s.machine.c_str());
+  text += line("image               %d x %d = %lld pixels\n", s.width, s.height, s.pixels());
+  text += line("max depth           %d\n", s.maxDepth);
+  text += line("threshold           %g%s\n", s.thresh, s.jitter ? " (jittered sub-samples)" : "");
+  text += line("primitives          %zu (accel: %s)\n", s.primitives, s.accel.c_str());
+  text += line("threads             %d\n", s.threads);
+  text += line("load / build        %.3f s / %.3f s (wall)\n", s.loadSeconds, s.buildSeconds);
+  text += line("render CPU time     %.3f s (user + system, all threads)\n", s.cpuSeconds);
+  text += line("render wall time    %.3f s\n", s.wallSeconds);
+  text += line("eye rays            %llu (pass 1: %llu, antialiasing: %llu)\n",
+               (unsigned long long)c.eye(), (unsigned long long)c.eyePrimary,
+               (unsigned long long)c.eyeAntialias);
+  text += line("shadow rays         %llu\n", (unsigned long long)c.shadow);
+  text += line("reflected rays      %llu\n", (unsigned long long)c.reflected);
+  text += line("transmitted rays    %llu (total internal reflections: %llu)\n",
+               (unsigned long long)c.transmitted, (unsigned long long)c.tirEvents);
+  text += line("total rays          %llu\n", (unsigned long long)c.total());
+  text += line("rays per pixel      %.3f\n", s.raysPerPixel());
+  text += line("supersampled        %lld pixels (%.2f%%)\n", s.supersampledPixels,
+               100.0 * s.supersampledShare());
+  text += line("avgmax              %.6g\n", s.avgmax);
+  return text;
+}
+
+std::string formatStatsJson(const RenderStats& s) {
+  const RayCounts& c = s.counts;
+  const nlohmann::ordered_json json = {
+      {"scene", s.scene},
+      {"machine", s.machine},
+      {"width", s.width},
+      {"height", s.height},
+      {"pixels", s.pixels()},
+      {"max_depth", s.maxDepth},
+      {"thresh", s.thresh},
+      {"jitter", s.jitter},
+      {"accel", s.accel},
+      {"threads", s.threads},
+      {"primitives", s.primitives},
+      {"load_seconds", s.loadSeconds},
+      {"build_seconds", s.buildSeconds},
+      {"cpu_seconds", s.cpuSeconds},
+      {"wall_seconds", s.wallSeconds},
+      {"rays",
+       {{"eye", c.eye()},
+        {"eye_pass1", c.eyePrimary},
+        {"eye_antialias", c.eyeAntialias},
+        {"shadow", c.shadow},
+        {"reflected", c.reflected},
+        {"transmitted", c.transmitted},
+        {"total", c.total()}}},
+      {"tir_events", c.tirEvents},
+      {"rays_per_pixel", s.raysPerPixel()},
+      {"supersampled_pixels", s.supersampledPixels},
+      {"supersampled_share", s.supersampledShare()},
+      {"avgmax", s.avgmax},
+  };
+  return json.dump(2) + "\n";
+}
+
+} // namespace prism

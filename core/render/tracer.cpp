@@ -1,0 +1,230 @@
+#include "core/render/tracer.h"
+
+#include <limits>
+#include <stdexcept>
+
+namespace prism {
+
+namespace {
+
+// Where a new ray may start: the hit point moved off the surface to one side.
+struct SurfaceFrame {
+  Vec3 above; // on the side the incoming ray came from
+  Vec3 below; // on the far side (for refraction)
+};
+
+SurfaceFrame frameAt(const Vec3& point, const Vec3& shadingNormal, const Vec3& rayOrigin) {
+  const double offset =
+      kRayOffsetScale * (maxAbsComponent(point) + maxAbsComponent(rayOrigin)) + 1e-300;
+  return {point + offset * shadingNormal, point - offset * shadingNormal};
+}
+
+// Mirror direction of unit `d` about unit `n`.
+Vec3 reflect(const Vec3& d, const Vec3& n) { return glm::normalize(d - 2.0 * glm::dot(d, n) * n); }
+
+constexpr double kGrazingCos2 = 1e-12;
+
+// Refracted direction of unit `d` through a surface with unit normal `n` facing
+// the incoming ray, for the index ratio eta = n_from / n_to; false on total
+// internal reflection.
+bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
+  const double cosIn = -glm::dot(d, n);
+  const double k = 1.0 - eta * eta * (1.0 - cosIn * cosIn); // cos^2 of the refracted angle
+  // At the critical angle the refracted ray would run along the surface; k is 0
+  // only up to round-off there, so a margin makes the critical angle itself
+  // reflect totally whichever way the rounding goes (it grazes within 1e-6 rad).
+  // Written so that a NaN k is total reflection too: with an index so large
+  // that eta * eta overflows, inf * 0 is NaN at normal incidence, and the
+  // critical angle of such an index is far below what a double resolves.
+  if (!(k > kGrazingCos2)) return false;
+  out = glm::normalize(eta * d + (eta * cosIn - std::sqrt(k)) * n);
+  return true;
+}
+
+// Radiance is never limited, but a double can overflow: a light of intensity
+// 1e308 at distance 0.1, or a chain of mirrors with ksr > 1. Infinity is fine
+// in a sum of non-negative terms; only infinity times zero (a material with
+// kdr = 0 under that light) would make a NaN. So every value that may have
+// overflowed is pegged at the largest double before it is multiplied by a
+// coefficient that may be zero. The film then stores the largest float (see
+// toRgb). For every finite radiance this changes nothing.
+Color saturated(const Color& c) { return glm::min(c, Color(std::numeric_limits<double>::max())); }
+
+bool isFlat(PrimitiveRef ref) {
+  return ref.kind == PrimitiveKind::Polygon || ref.kind == PrimitiveKind::Triangle;
+}
+
+} // namespace
+
+Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCache cache)
+    : scene_(scene), accel_(accel), maxDepth_(maxDepth) {
+  if (cache == BlockerCache::On) lastBlocker_.resize(std::size_t(maxDepth) * scene.lights.size());
+}
+
+Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* record,
+                    const PrimitiveRef* skip) {
+  if (record != nullptr) {
+    record->ray = ray;
+    record->depth = depth;
+  }
+  Hit hit;
+  if (!accel_.closestHit(ray, Interval{}, skip, hit)) {
+    if (record != nullptr) record->radiance = scene_.background;
+    return scene_.background;
+  }
+  return shade(ray, hit, depth, counts, record);
+}
+
+void Tracer::traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCounts& counts) {
+  if (rays.size() > Accel::kMaxBundle || out.size() < rays.size())
+    throw std::length_error("traceBundle: at most Accel::kMaxBundle rays, a colour for each");
+  Hit hits[Accel::kMaxBundle];
+  const std::uint64_t found = accel_.closestHits(rays, std::span(hits, rays.size()));
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    out[i] =
+        (found >> i & 1u) != 0 ? shade(rays[i], hits[i], 1, counts, nullptr) : scene_.background;
+}
+
+bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
+                     int depth) {
+  const Interval range{0.0, length};
+  if (lastBlocker_.empty()) return accel_.anyHit(ray, range, skip);
+  std::optional<PrimitiveRef>& last =
+      lastBlocker_[std::size_t(std::min(depth, maxDepth_) - 1) * scene_.lights.size() + light];
+  double t;
+  if (last && !(skip != nullptr && *skip == *last) &&
+      intersectPrimitive(scene_, *last, ray, range, t))
+    return true;
+  PrimitiveRef blocker;
+  if (!accel_.anyHit(ray, range, skip, &blocker)) return false;
+  last = blocker;
+  return true;
+}
+
+Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts,
+                    RayTreeNode* record) {
+  const Material& m = scene_.material(hit.primitive);
+  const Vec3 point = ray.at(hit.t);
+  const Vec3 normal = outwardNormal(scene_, hit.primitive, point);
+  // SPEC 1.3/1.4: leaving iff N.D > 0; shade with the normal facing the ray.
+  // Both the test and where new rays start use the geometric normal `g`.
+  const bool leaving = glm::dot(normal, ray.dir) > 0.0;
+  const Vec3 g = leaving ? -normal : normal;
+  SurfaceFrame frame = frameAt(point, g, ray.origin);
+  // A smooth triangle is shaded with its interpolated normal, turned the same
+  // way; one that faces away from the ray's side of the surface (vertex
+  // normals bent past the face) would light the wrong side: `g` then.
+  Vec3 n = g;
+  if (hit.primitive.kind == PrimitiveKind::Triangle) {
+    const Vec3 interpolated = interpolatedNormal(scene_, hit.primitive, point);
+    const Vec3 turned = leaving ? -interpolated : interpolated;
+    if (glm::dot(turned, g) > 0.0) n = turned;
+    // Shadow and reflected rays start from the curved surface the normals
+    // describe (see liftedPoint), on the outward side only.
+    const Triangle& tri = scene_.triangles[hit.primitive.index];
+    if (!leaving && tri.smooth()) {
+      const Vec3 lifted =
+          liftedPoint(tri, scene_.meshVertices.data(), scene_.meshNormals.data(), point);
+      frame.above = frameAt(lifted, g, ray.origin).above;
+    }
+  }
+  // A grazing ray can meet a bent shading normal from behind; mirroring or
+  // refracting about it would send the ray through the surface, so those use
+  // `g` there. (For every other primitive n is g and this changes nothing.)
+  const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
+  const PrimitiveRef* skip = isFlat(hit.primitive) ? &hit.primitive : nullptr;
+
+  Color diffuse(0.0), specular(0.0);
+  // A material with kdr = ksr = 0 cannot reflect light, so no shadow ray could
+  // change the result: none is traced (or counted).
+  const bool reflectsLight = m.kdr > 0.0 || m.ksr > 0.0;
+  for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    LightTerm term;
+    term.light = int(i) + 1;
+    const Vec3 toLight = light.position - point;
+    const double r2 = glm::dot(toLight, toLight);
+    term.distance = std::sqrt(r2);
+    const double invR2 = 1.0 / r2;
+    const Vec3 l = toLight / term.distance;
+    term.cosine = std::isfinite(invR2) ? glm::dot(n, l) : 0.0;
+    // A light behind the surface, or at the shaded point itself, adds nothing.
+    term.behind = !(term.cosine > 0.0);
+    term.skipped = !term.behind && !reflectsLight;
+    if (!term.behind && !term.skipped) {
+      const Vec3 shadowToLight = light.position - frame.above;
+      const double shadowLength = glm::length(shadowToLight);
+      ++counts.shadow;
+      // A blocker at or beyond the light does not count: the range ends there.
+      term.shadowed = shadowLength > 0.0 && blocked({frame.above, shadowToLight / shadowLength},
+                                                    shadowLength, skip, i, depth);
+      if (term.shadowed && record != nullptr) {
+        accel_.closestHit({frame.above, shadowToLight / shadowLength}, Interval{0.0, shadowLength},
+                          skip, term.blocker);
+      }
+      if (!term.shadowed) {
+        term.diffuse = light.intensity * (term.cosine * invR2);
+        const Vec3 halfway = l - ray.dir;
+        const double length = glm::length(halfway);
+        const double cosH = length > 0.0 ? glm::dot(n, halfway / length) : 0.0;
+        term.specular = light.intensity * (std::pow(std::max(cosH, 0.0), m.e) * invR2);
+        diffuse += term.diffuse;
+        specular += term.specular;
+      }
+    }
+    if (record != nullptr) record->lights.push_back(term);
+  }
+
+  const Color ambientDiffuse = saturated(m.color * m.kdr) * saturated(scene_.ambient + diffuse);
+  const Color highlight = m.ksr * saturated(specular);
+  Color reflected(0.0), transmitted(0.0);
+  bool tir = false;
+  RayTreeNode* reflectedRecord = nullptr;
+  RayTreeNode* transmittedRecord = nullptr;
+  if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid
+
+  if (depth < maxDepth_ && m.ksr > 0.0) {
+    ++counts.reflected;
+    if (record != nullptr) {
+      reflectedRecord = &record->children.emplace_back();
+      reflectedRecord->kind = RayKind::Reflected;
+    }
+    const Ray r{frame.above, reflect(ray.dir, nr)};
+    reflected = m.ksr * trace(r, depth + 1, counts, reflectedRecord, skip);
+  }
+  if (depth < maxDepth_ && m.kst > 0.0) {
+    // Entering a solid from air the index ratio is 1/ir; leaving it, ir.
+    const double eta = leaving ? m.ir : 1.0 / m.ir;
+    Vec3 dir;
+    if (refract(ray.dir, nr, eta, dir)) {
+      ++counts.transmitted;
+      if (record != nullptr) {
+        transmittedRecord = &record->children.emplace_back();
+        transmittedRecord->kind = RayKind::Transmitted;
+      }
+      transmitted = m.kst * trace({frame.below, dir}, depth + 1, counts, transmittedRecord, skip);
+    } else {
+      ++counts.tirEvents; // TIR moves no energy: I_t = 0, reflection unchanged
+      tir = true;
+    }
+  }
+
+  const Color radiance = ambientDiffuse + highlight + reflected + transmitted;
+  if (record != nullptr) {
+    record->hit = true;
+    record->where = hit;
+    record->point = point;
+    record->normal = normal;
+    record->shadingNormal = n;
+    record->leaving = leaving;
+    record->totalInternalReflection = tir;
+    record->ambientDiffuse = ambientDiffuse;
+    record->highlight = highlight;
+    record->reflected = reflected;
+    record->transmitted = transmitted;
+    record->radiance = radiance;
+  }
+  return radiance;
+}
+
+} // namespace prism

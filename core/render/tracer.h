@@ -1,0 +1,61 @@
+// The recursive tracer of SPEC 1: one ray in, the radiance flowing back along it
+// out. A Tracer is used by one thread at a time (make one per tile: it is
+// cheap): it remembers, per light and depth, the primitive that last blocked a
+// shadow ray and tries it first on the next one, since neighbouring points
+// are usually shadowed by the same thing. That changes how fast the answer
+// comes, never the answer: a shadow ray is blocked if any primitive is hit
+// before the light, whichever is found first. Everything else it writes is
+// the caller's RayCounts (and the optional ray-tree record).
+#pragma once
+
+#include "core/accel/accel.h"
+#include "core/render/ray_counts.h"
+#include "core/render/ray_tree.h"
+
+#include <optional>
+#include <vector>
+
+namespace prism {
+
+// Origins of rays that leave a surface are moved off it along the normal by this
+// fraction of the magnitude of the coordinates involved. Round-off in a hit point
+// is proportional to those magnitudes, so the offset scales with the scene (SPEC
+// 1.5): the same picture at 1e-4 and at 1e4 units, no shadow acne.
+inline constexpr double kRayOffsetScale = 1e-9;
+
+class Tracer {
+public:
+  // Off sends every shadow ray to the Accel, for measuring the Accel alone.
+  enum class BlockerCache { On, Off };
+
+  // maxDepth >= 1; `scene` and `accel` must outlive the tracer.
+  Tracer(const Scene& scene, const Accel& accel, int maxDepth,
+         BlockerCache cache = BlockerCache::On);
+
+  // Radiance arriving at the ray's origin from direction -ray.dir. `depth` is 1
+  // for eye rays. `skip` is a flat primitive the ray leaves (never re-hit).
+  Color trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* record = nullptr,
+              const PrimitiveRef* skip = nullptr);
+
+  // trace(rays[i], 1, counts) for each of at most Accel::kMaxBundle eye rays,
+  // into out[i]: the same colours and counts, with the nearest hits found for
+  // the bundle at once (Accel::closestHits), which is faster when the rays
+  // share their origin and point roughly the same way.
+  void traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCounts& counts);
+
+  int maxDepth() const { return maxDepth_; }
+
+private:
+  Color shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts, RayTreeNode* record);
+  // Whether anything but `skip` lies on `ray` before `length` (the light).
+  bool blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
+               int depth);
+
+  const Scene& scene_;
+  const Accel& accel_;
+  int maxDepth_;
+  // The last blocker per (depth - 1) * lights + light; empty with BlockerCache::Off.
+  std::vector<std::optional<PrimitiveRef>> lastBlocker_;
+};
+
+} // namespace prism

@@ -1,0 +1,20 @@
+// The surface model of SPEC 1.1: colour, three coefficients, an exponent and an
+// index of refraction. Defaults are the `surface` defaults of SPEC 4.
+#pragma once
+
+#include "core/math/math.h"
+
+namespace prism {
+
+struct Material {
+  Color color{1.0}; // C_mat
+  double kdr = 1.0; // diffuse reflection
+  double ksr = 0.0; // specular reflection (highlight and mirror ray)
+  double kst = 0.0; // specular transmission (refracted ray)
+  double e = 1.0;   // specular (Phong half-vector) exponent
+  double ir = 1.0;  // index of refraction of the solid, air outside
+
+  bool operator==(const Material&) const = default;
+};
+
+} // namespace prism

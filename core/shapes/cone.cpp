@@ -1,0 +1,134 @@
+#include "core/shapes/cone.h"
+
+#include <cmath>
+
+namespace prism {
+
+namespace {
+
+// A unit vector perpendicular to unit `w` (Frisvad's construction, made
+// branch-safe as in Duff et al. 2017).
+void perpendicularPair(const Vec3& w, Vec3& u, Vec3& v) {
+  const double sign = std::copysign(1.0, w.z);
+  const double a = -1.0 / (sign + w.z);
+  const double b = w.x * w.y * a;
+  u = Vec3(1.0 + sign * w.x * w.x * a, sign * b, -sign * w.x);
+  v = Vec3(b, sign + w.y * w.y * a, -w.y);
+}
+
+} // namespace
+
+std::optional<std::string> coneProblem(const Vec3& base, double baseRadius, const Vec3& apex,
+                                       double apexRadius) {
+  if (!isFinite(base) || !isFinite(apex) || !std::isfinite(baseRadius) ||
+      !std::isfinite(apexRadius))
+    return "not finite";
+  if (baseRadius < 0.0 || apexRadius < 0.0) return "negative radius";
+  if (baseRadius == 0.0 && apexRadius == 0.0) return "both radii are zero";
+  const Vec3 axis = apex - base;
+  if (axis == Vec3(0.0)) return "base and apex are the same point";
+  // The frame needs a unit axis; a length that underflows or overflows has none.
+  const double scale = maxAbsComponent(axis);
+  if (!std::isfinite(glm::length(axis / scale) * scale)) return "the axis is too long";
+  return std::nullopt;
+}
+
+Cone makeCone(const Vec3& base, double baseRadius, const Vec3& apex, double apexRadius,
+              const Mat3& linear, const Vec3& offset) {
+  const Vec3 axis = apex - base;
+  const double scale = maxAbsComponent(axis);
+  const Vec3 w = glm::normalize(axis / scale);
+  Vec3 u, v;
+  perpendicularPair(w, u, v);
+  Cone c;
+  // Unit x and y keep the radii in world units; z spans the whole height.
+  c.objectToWorld = linear * Mat3(u, v, axis);
+  c.objectToWorldOffset = linear * base + offset;
+  c.worldToObject = glm::inverse(c.objectToWorld);
+  c.worldToObjectOffset = -(c.worldToObject * c.objectToWorldOffset);
+  c.normalToWorld = glm::transpose(c.worldToObject);
+  c.baseRadius = baseRadius;
+  c.apexRadius = apexRadius;
+  // Each end is an ellipse: centre m, semi-axes r X and r Y (the frame's x and
+  // y axes); along world axis i it reaches r sqrt(X_i^2 + Y_i^2) from m.
+  const Mat3& m = c.objectToWorld;
+  const Vec3 spread(std::hypot(m[0].x, m[1].x), std::hypot(m[0].y, m[1].y),
+                    std::hypot(m[0].z, m[1].z));
+  const Vec3 ends[2] = {c.objectToWorldOffset, c.objectToWorldOffset + m[2]};
+  const double radii[2] = {baseRadius, apexRadius};
+  for (int i = 0; i < 2; ++i) {
+    c.bounds.extend(ends[i] - radii[i] * spread);
+    c.bounds.extend(ends[i] + radii[i] * spread);
+  }
+  return c;
+}
+
+bool intersect(const Cone& c, const Ray& ray, Interval range, double& t) {
+  Vec3 o = c.worldToObject * ray.origin + c.worldToObjectOffset;
+  const Vec3 d = c.worldToObject * ray.dir;
+  const double dd = glm::dot(d, d);
+  // Solve from the point of the ray nearest the cone's middle: the quadratic's
+  // coefficients then stay of the cone's size even for a far-away origin, and
+  // no precision is lost to cancellation between huge terms.
+  const double shift = glm::dot(Vec3(0.0, 0.0, 0.5) - o, d) / dd;
+  o += shift * d;
+
+  const double k = c.apexRadius - c.baseRadius; // radius gained per unit of z
+  const double ro = c.baseRadius + k * o.z;     // radius at the origin's height
+  const double a = d.x * d.x + d.y * d.y - k * k * d.z * d.z;
+  const double b = o.x * d.x + o.y * d.y - k * d.z * ro; // half of the usual b
+  const double cc = o.x * o.x + o.y * o.y - ro * ro;
+
+  double roots[2];
+  int count = 0;
+  if (a == 0.0) {
+    // Parallel to a line of the surface (for a cylinder: to the axis). One
+    // crossing, unless the ray lies in the surface or never meets it.
+    if (b == 0.0) return false;
+    roots[count++] = -cc / (2.0 * b);
+  } else {
+    const double disc = b * b - a * cc;
+    if (disc < 0.0) return false;
+    // The stable pair of roots: q / a and cc / q never subtract close numbers.
+    const double q = -(b + std::copysign(std::sqrt(disc), b));
+    const double r0 = q / a;
+    const double r1 = q != 0.0 ? cc / q : r0;
+    roots[0] = std::min(r0, r1);
+    roots[1] = std::max(r0, r1);
+    count = 2;
+  }
+  for (int i = 0; i < count; ++i) {
+    const double z = o.z + roots[i] * d.z;
+    // Outside 0 <= z <= 1 is the cone's continuation (or its mirror nappe
+    // beyond a tip), not the surface. Both ends are open.
+    if (!(z >= 0.0 && z <= 1.0)) continue;
+    const double candidate = shift + roots[i];
+    if (range.contains(candidate)) {
+      t = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+Vec3 normalAt(const Cone& c, const Vec3& point) {
+  const Vec3 p = c.worldToObject * point + c.worldToObjectOffset;
+  const double k = c.apexRadius - c.baseRadius;
+  // The gradient of x^2 + y^2 - r(z)^2 (halved), pointing out of the solid.
+  Vec3 g(p.x, p.y, -k * (c.baseRadius + k * p.z));
+  if (g.x == 0.0 && g.y == 0.0) g = Vec3(0.0, 0.0, k < 0.0 ? 1.0 : -1.0); // the tip
+  return glm::normalize(c.normalToWorld * g);
+}
+
+bool isCircular(const Cone& c) {
+  const Vec3& x = c.objectToWorld[0];
+  const Vec3& y = c.objectToWorld[1];
+  const Vec3& z = c.objectToWorld[2];
+  const double lx = glm::length(x), ly = glm::length(y), lz = glm::length(z);
+  constexpr double kTolerance = 1e-12;
+  return std::abs(lx - ly) <= kTolerance * lx && std::abs(glm::dot(x, y)) <= kTolerance * lx * ly &&
+         std::abs(glm::dot(x, z)) <= kTolerance * lx * lz &&
+         std::abs(glm::dot(y, z)) <= kTolerance * ly * lz;
+}
+
+} // namespace prism

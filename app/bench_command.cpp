@@ -169,7 +169,7 @@ void benchScenes(const BenchCommandOptions& o, int allThreads) {
   }
 }
 
-// Per-ray cost of eye and shadow rays as scenes grow, for the README's plot.
+// Per-ray cost of eye and shadow rays as scenes grow, for docs/performance.md's plot.
 void benchScaling(const BenchCommandOptions& o) {
   std::ofstream data;
   if (!o.data.empty()) {
@@ -227,7 +227,7 @@ void benchScaling(const BenchCommandOptions& o) {
 
 CLI::App* addBenchCommand(CLI::App& app, BenchCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Measure acceleration structures and ray throughput (README: Performance)");
+      "bench", "Measure acceleration structures and ray throughput (docs/performance.md)");
   cmd->add_option("scenes", o.scenes, "Scene files to measure (none: only the scaling series)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--accel", o.accels, "Acceleration modes to measure [bvh groups none]")

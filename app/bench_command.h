@@ -1,6 +1,6 @@
 // `prism bench`: acceleration and throughput figures for scenes given on the
 // command line and a scaling series on generated scenes of 10^3 to 10^6
-// primitives (see README "Performance").
+// primitives (see docs/performance.md).
 #pragma once
 
 #include "core/accel/accel.h"

@@ -33,7 +33,7 @@ struct RenderCommandOptions {
   bool quiet = false;     // no progress, no statistics on stderr
 };
 
-// Exit codes of SPEC 5: 0 success, 1 render/IO failure, 2 usage or scene error.
+// Exit codes (docs/command-line.md): 0 success, 1 render/IO failure, 2 usage or scene error.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;

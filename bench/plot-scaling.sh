@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the benchmark's scaling series and draws docs/scaling.png (README,
+# Runs the benchmark's scaling series and draws docs/scaling.png (docs/performance.md,
 # "Performance"). Needs gnuplot (Debian: gnuplot-nox); the tests do not.
 # Usage: bench/plot-scaling.sh [path/to/prism]   (default: build/prism)
 set -euo pipefail

@@ -1,4 +1,4 @@
-# The README's scaling plot: nanoseconds per eye ray (intersection only, one
+# docs/performance.md's scaling plot: nanoseconds per eye ray (intersection only, one
 # thread) against the number of primitives, for each generated scene and accel.
 # Input: the file `prism bench --data` writes. Run through bench/plot-scaling.sh.
 #   gnuplot -e "data='scaling.dat'; out='docs/scaling.png'" bench/scaling.gp

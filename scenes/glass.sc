@@ -712,7 +712,7 @@ pop
 # extruded from y = 0.002 to 2.802 (just above the floor, so no face coincides
 # with it). Faces counterclockwise seen from outside.
 # In this shading model a totally reflected ray carries the ksr share only
-# (SPEC 1.6: TIR moves no energy into the reflection), so the prism's glass has
+# (docs/rendering-model.md: TIR moves no energy into the reflection), so the prism's glass has
 # a larger ksr than the others to make the reflected stripes bright enough.
 push
   surface 0.9 0.95 1  0.03 0.4 0.65  300 1.5

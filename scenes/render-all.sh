@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the four shipped scenes as the README shows them (512x512 unless the
+# Renders the four shipped scenes as docs/scenes.md shows them (512x512 unless the
 # scene says otherwise, depth 5, threshold 0.1) into out/, writes 256-pixel PNG
 # thumbnails to docs/, and prints the statistics table as Markdown.
 # Usage: scenes/render-all.sh [path/to/prism]   (default: build/prism)

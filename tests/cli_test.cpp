@@ -1,4 +1,4 @@
-// The prism program as users run it: exit codes (SPEC 5), located scene errors,
+// The prism program as users run it: exit codes (docs/command-line.md), located scene errors,
 // no partial output file, the written image and statistics.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -168,7 +168,7 @@ TEST_F(Cli, WritesAn8BitRgbTiffAndJsonStatistics) {
   std::vector<unsigned char> pixels(40 * 30 * 3);
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
   const auto stats = nlohmann::json::parse(slurp(json));
-  // The same render as float radiance, exposed by hand with SPEC 2 step 3:
+  // The same render as float radiance, exposed by hand (docs/image-formation.md, exposure):
   // min(255, round(radiance * 128 / avgmax)) must give the bytes of the TIFF.
   const fs::path exr = dir_ / "o.exr";
   ASSERT_EQ(prism("render " + s + " -o " + exr.string() + " --size 40 30 --depth 3 --thresh 0.2 -q")

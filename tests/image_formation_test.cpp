@@ -1,4 +1,4 @@
-// SPEC 2 on synthetic buffers and a one-polygon scene whose radiance is known
+// Image formation (docs/image-formation.md) on synthetic buffers and a one-polygon scene whose radiance is known
 // exactly: the supersampling decision, sub-sample placement, avgmax, exposure.
 #include "core/render/exposure.h"
 #include "core/render/image_formation.h"

@@ -1,4 +1,4 @@
-// The scene language of SPEC 4: every command, the state it keeps (material,
+// The scene language (docs/scene-language.md): every command, the state it keeps (material,
 // transform, groups, includes) and every error with its exact position. Expected
 // values are worked out by hand in the comments.
 #include "core/io/scene_parser.h"
@@ -208,7 +208,7 @@ TEST(Parser, LightsArePlacedThroughTheTransformButKeepTheirIntensity) {
 }
 
 TEST(Parser, TransformsPostMultiply) {
-  // SPEC 1.6: after translate 5 0 0 then rotate 0 0 1 90 an object is rotated first:
+  // After translate 5 0 0 then rotate 0 0 1 90 an object is rotated first:
   // (1,0,0) -> (0,1,0) -> (5,1,0).
   const Scene s = parse("translate 5 0 0\nrotate 0 0 1 90\nsphere 1 0 0 1\n");
   ASSERT_EQ(s.spheres.size(), 1u);
@@ -719,7 +719,7 @@ TEST(ParserErrors, NegativeColoursAndCoefficients) {
             "t.sc:1:9: error: surface: R must not be negative, found '-1'\n"
             "t.sc:1:16: error: surface: KDR must not be negative, found '-1'\n"
             "t.sc:1:25: error: surface: IR must be positive, found '0'");
-  // e = 0 is allowed (SPEC 1.6).
+  // e = 0 is allowed (docs/rendering-model.md).
   EXPECT_EQ(parse("surface 1 1 1 1 1 0 0 1 sphere 0 0 0 1").materials.at(0).e, 0.0);
 }
 

@@ -1,4 +1,4 @@
-// The tracer against radiance computed by hand from SPEC 1: the cosine and
+// The tracer against radiance computed by hand from the model of docs/rendering-model.md: the cosine and
 // inverse-square laws, the Phong half-vector highlight, shadows, mirrors,
 // Snell's law, total internal reflection, depth limits and ray statistics.
 // Scenes are built in code; every expected value is closed-form math written
@@ -389,7 +389,7 @@ TEST(Mirror, FacingMirrorsStopAtMaxDepth) {
     for (int d = 1; d <= maxDepth; ++d) {
       ASSERT_TRUE(node->hit);
       EXPECT_EQ(node->depth, d);
-      // Each bounce starts a hair off the surface (SPEC 1.5), which shifts later
+      // Each bounce starts a hair off the surface (docs/rendering-model.md), which shifts later
       // hits by ~1e-9 of the coordinates per bounce.
       EXPECT_NEAR(node->point.x, d - 0.5, 1e-5);
       if (d == maxDepth) {
@@ -472,7 +472,7 @@ TEST(Refraction, BallLensBendsTwiceBySnellsLaw) {
     expectVecNear(inside.ray.dir, Vec3(std::cos(turn), -std::sin(turn), 0.0), 1e-12);
     ASSERT_TRUE(inside.hit);
     EXPECT_TRUE(inside.leaving);
-    // The inner ray starts ~1e-9 of the coordinates off the surface (SPEC 1.5),
+    // The inner ray starts ~1e-9 of the coordinates off the surface (docs/rendering-model.md),
     // which moves the exit by about 1e-8 here.
     EXPECT_NEAR(inside.where.t, 2.0 * radius * std::cos(theta2), 1e-7);
     expectVecNear(inside.point, entry + 2.0 * radius * std::cos(theta2) * inside.ray.dir, 1e-7);

@@ -1,4 +1,4 @@
-// Statistics (SPEC 3): counts that can be derived by hand for simple scenes, and
+// Statistics (docs/statistics.md): counts that can be derived by hand for simple scenes, and
 // the identities every render must satisfy.
 #include "core/io/scene_parser.h"
 #include "core/render/renderer.h"

@@ -458,7 +458,7 @@ TEST_F(ViewInput, InspectAPixelAndCompareWithAPinnedRender) {
 }
 
 // Save with the window's exposure says so in the file; by default the file
-// is what `prism render` writes, with SPEC's automatic exposure.
+// is what `prism render` writes, with the automatic exposure.
 TEST_F(ViewInput, SaveSaysHowThePictureWasExposed) {
   ASSERT_TRUE(app_.click("Display/lock exposure (E)", 0.05));
   ASSERT_TRUE(app_.waitForValue("Display/lock exposure (E)", "true"));

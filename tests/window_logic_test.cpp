@@ -42,7 +42,7 @@ TEST(LiveExposure, SteadyWhileARenderRefines) {
   done.phase = SessionPhase::Done;
   done.avgmax = 0.625;
   e.update(done);
-  EXPECT_EQ(e.avgmax(), 0.625); // pass 1's own, exactly (SPEC)
+  EXPECT_EQ(e.avgmax(), 0.625); // pass 1's own, exactly (docs/image-formation.md)
   EXPECT_EQ(e.scale(), exposureScale(0.625));
   EXPECT_TRUE(e.automatic());
   // An edit restarts the render: until its first level is complete the

@@ -125,7 +125,7 @@ o.append("""# ---------------------------------------------------------------- 3
 # extruded from y = 0.002 to %g (just above the floor, so no face coincides
 # with it). Faces counterclockwise seen from outside.
 # In this shading model a totally reflected ray carries the ksr share only
-# (SPEC 1.6: TIR moves no energy into the reflection), so the prism's glass has
+# (docs/rendering-model.md: TIR moves no energy into the reflection), so the prism's glass has
 # a larger ksr than the others to make the reflected stripes bright enough.
 push
   %s

@@ -1,5 +1,5 @@
 // sphere_obj STACKS SLICES OUT.obj: writes a UV sphere with vertex normals as
-// an OBJ file, for the import benchmark of the README ("Importing NFF and
+// an OBJ file, for the import benchmark of docs/importing.md ("Importing NFF and
 // OBJ"): `sphere_obj 501 1000 sphere.obj` is exactly 1,000,000 triangles.
 #include "tools/sphere_mesh.h"
 

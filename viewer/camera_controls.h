@@ -14,7 +14,7 @@ namespace prism {
 // Turns the eye around `lookat`: `yawDegrees` about the scene's `up` axis,
 // `pitchDegrees` toward (+) or away from (-) `up`. The distance to `lookat` is
 // kept, and the view never comes within 1 degree of `up` (where it would be
-// undefined, SPEC 1.6).
+// undefined, docs/image-formation.md).
 CameraSpec orbit(const CameraSpec& camera, double yawDegrees, double pitchDegrees);
 
 // Slides eye and lookat together in the image plane so that a point at the

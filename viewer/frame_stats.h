@@ -1,6 +1,6 @@
 // Frame timing of the previewer: how smoothly the window redraws while the
 // render threads work. Kept per frame so a scripted session can report the
-// figures the README quotes (frame rate while rendering, frame-time percentiles).
+// figures docs/previewer.md quotes (frame rate while rendering, frame-time percentiles).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The exposure the window applies while a render refines. SPEC's automatic
+// The exposure the window applies while a render refines. The automatic
 // exposure divides by avgmax, which is known only once pass 1 is complete;
 // until then the window estimates it. Taken over the pixel centres traced so
 // far, the estimate "pumped" by about 8% after every edit, as tiles finished in
@@ -30,7 +30,7 @@ public:
   bool locked() const { return locked_; }
   void setEv(double ev) { ev_ = ev; }
   double ev() const { return ev_; }
-  // SPEC's automatic exposure, unlocked and without offset.
+  // The automatic exposure, unlocked and without offset.
   bool automatic() const { return !locked_ && ev_ == 0.0; }
 
 private:

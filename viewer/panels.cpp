@@ -127,7 +127,7 @@ void lightsSection(ViewController& c, WindowState& state) {
     bool changed = ui::dragDoubles(label.c_str(), &light.position[0], 3, dragSpeed(extent), "%.2f");
     const double peak = std::max(1e-9, maxComponent(light.intensity));
     if (ui::dragDoubles("##intensity", &light.intensity[0], 3, dragSpeed(peak), "%.2f")) {
-      light.intensity = glm::max(light.intensity, Color(0.0)); // SPEC 4: never negative
+      light.intensity = glm::max(light.intensity, Color(0.0)); // never negative (docs/scene-language.md)
       changed = true;
     }
     // The intensity's hue, at full brightness, in place of a label.
@@ -143,7 +143,7 @@ void lightsSection(ViewController& c, WindowState& state) {
   }
 }
 
-// Whether `camera` can be rendered (SPEC 1.6): a view direction, `up` not
+// Whether `camera` can be rendered (docs/image-formation.md): a view direction, `up` not
 // along it, a field of view strictly between 0 and 180 degrees.
 bool usable(const CameraSpec& camera) {
   const Vec3 forward = camera.lookat - camera.eye;
@@ -170,7 +170,7 @@ void cameraSection(ViewController& c, WindowState& state) {
   dimText("On the picture: drag to orbit, right-drag or shift-drag to pan, wheel to zoom.");
 }
 
-// How the picture is exposed: SPEC's automatic 128 / avgmax, or locked at the
+// How the picture is exposed: the automatic 128 / avgmax, or locked at the
 // current avgmax; either offset by EV stops. The text below always has the
 // same number of lines, so the panel never jumps as the render refines.
 void displaySection(ViewController& c, WindowState& state) {
@@ -183,7 +183,7 @@ void displaySection(ViewController& c, WindowState& state) {
   ImGui::Text("avgmax %.5g   scale %.5g", state.exposure.avgmax(), double(state.exposure.scale()));
   const SessionProgress& p = c.progress();
   const char* source = state.exposure.locked()           ? "locked: the render does not change it"
-                       : p.phase != SessionPhase::Coarse ? "pass 1's avgmax (SPEC)"
+                       : p.phase != SessionPhase::Coarse ? "pass 1's avgmax"
                        : state.exposure.holding()        ? "held from before the edit"
                                                          : "from the complete coarse levels";
   dimText(source);
@@ -467,7 +467,7 @@ void setPictureActualSize(WindowState& state) {
 
 void savePicture(ViewController& c, WindowState& state) {
   if (state.savePath.empty()) return;
-  PictureExposure exposure; // SPEC's automatic exposure, unless the user asks
+  PictureExposure exposure; // the automatic exposure, unless the user asks
   if (state.saveWindowExposure && !state.exposure.automatic()) {
     exposure.automatic = false;
     exposure.avgmax = state.exposure.avgmax();

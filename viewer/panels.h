@@ -59,7 +59,7 @@ struct WindowState {
   std::optional<glm::ivec2> inspected; // the pixel clicked: its ray tree is shown
   std::string rayTree;                 // of `inspected`, for the scene as it is now
   std::uint64_t rayTreeRestarts = 0;   // the render it was traced for
-  bool saveWindowExposure = false;     // Save uses the window's exposure, not SPEC's
+  bool saveWindowExposure = false;     // Save uses the window's exposure, not the automatic one
   PinnedRender pinned;
   CompareMode compare = CompareMode::Off;
   bool showPinned = false; // flip: the pinned render is on screen

@@ -19,7 +19,7 @@ public:
 
   ~SaveJob(); // waits for a write in progress
 
-  // Starts saving to `path`, as `prism render` writes it: with SPEC's
+  // Starts saving to `path`, as `prism render` writes it: with the automatic
   // automatic exposure unless `exposure` says otherwise (the file's metadata
   // says which). Fails at once (state Failed) when the path cannot be
   // written; a save already in progress is replaced only once it is written.

@@ -106,7 +106,7 @@ public:
   // `resolution` unless --size set it. If it has errors, this scene stays and
   // sceneErrors() says why.
   void open(const std::string& path);
-  // Saves the final picture, as `prism render` writes it (SPEC's automatic
+  // Saves the final picture, as `prism render` writes it (the automatic
   // exposure unless `exposure` asks for the window's).
   void save(const std::string& path, const PictureExposure& exposure = {}) {
     save_.start(path, exposure);

@@ -78,7 +78,7 @@ bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, In
                         double& t);
 
 // The unit outward normal of a primitive at a point on it: the geometric one,
-// which decides entering or leaving (SPEC 1.3) and where rays start.
+// which decides entering or leaving (docs/rendering-model.md) and where rays start.
 Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point);
 
 // The normal the surface is shaded with, also outward: for a smooth triangle

@@ -1,7 +1,7 @@
 // Reads NFF, the Neutral File Format of Eric Haines' Standard Procedural
 // Databases, into a Scene. The mapping onto Prism's model (how lights without
 // falloff become 1/r^2 lights, how `angle` becomes `fov`, how polygon patches
-// become smooth triangles) is documented in the README, "Importing NFF and
+// become smooth triangles) is documented in docs/importing.md, "Importing NFF and
 // OBJ". Errors are Diagnostics with file, line and column, thrown together as
 // a SceneError, exactly as for .sc files.
 #pragma once

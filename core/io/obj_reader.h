@@ -2,7 +2,7 @@
 // into a Scene of mesh triangles: smooth where the faces give vertex normals,
 // flat where they do not. OBJ has no camera and no lights, so the scene gets
 // a camera that frames the mesh and two default lights. The mapping of MTL
-// onto Prism's material model is documented in the README, "Importing NFF
+// onto Prism's material model is documented in docs/importing.md, "Importing NFF
 // and OBJ". Errors are Diagnostics with file, line and column (SceneError).
 #pragma once
 

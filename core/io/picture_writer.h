@@ -12,7 +12,7 @@
 
 namespace prism {
 
-// How an 8-bit picture is exposed. By default SPEC's automatic exposure
+// How an 8-bit picture is exposed. By default the automatic exposure
 // (128 / avgmax of the render's own pass 1); the previewer may ask for the
 // exposure its window shows instead: locked at another avgmax, offset by EV.
 struct PictureExposure {

@@ -1,4 +1,4 @@
-// The .sc scene language (SPEC 4; user documentation in docs/scene-language.md).
+// The .sc scene language (documented for users in docs/scene-language.md).
 //
 // A hand-written lexer over the whole file text and a recursive-descent parser,
 // one small member function per command. Errors never stop the parse early: each

@@ -1,4 +1,4 @@
-// Reads the .sc scene language of SPEC 4 into a Scene. Every problem found is
+// Reads the .sc scene language (docs/scene-language.md) into a Scene. Every problem found is
 // reported as a Diagnostic with file, line and column; the parser collects all
 // of them it can and then throws SceneError, never exits, so a previewer can show
 // the messages and keep its last good scene.

@@ -1,6 +1,6 @@
 // Vector types and the few scalar helpers the renderer shares. Geometry and
 // radiance are computed in double precision: scenes must render from 1e-4 to 1e4
-// units (SPEC 1.5) and double keeps round-off far below any modelled detail.
+// units (docs/rendering-model.md) and double keeps round-off far below any modelled detail.
 #pragma once
 
 #include <glm/glm.hpp>

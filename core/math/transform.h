@@ -1,6 +1,6 @@
 // Affine transforms as the scene language composes them: each command
 // post-multiplies the current matrix, as in OpenGL, so the command written last
-// acts on the object first (SPEC 1.6).
+// acts on the object first (docs/scene-language.md).
 #pragma once
 
 #include "core/math/math.h"

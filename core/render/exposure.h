@@ -1,4 +1,4 @@
-// Automatic exposure (SPEC 2 step 3): radiance * 128 / avgmax, rounded half away
+// Automatic exposure (docs/image-formation.md): radiance * 128 / avgmax, rounded half away
 // from zero, pegged at 255. One function for every consumer (the image writer
 // here, the previewer's shader mirrors it), computed in single precision as a
 // GPU computes it.

@@ -1,4 +1,4 @@
-// Per-pixel linear radiance as image formation fills it in (SPEC 2). Render
+// Per-pixel linear radiance as image formation fills it in (docs/image-formation.md). Render
 // workers write disjoint tiles of it; nothing here is clamped or exposed.
 #pragma once
 
@@ -13,7 +13,7 @@
 
 namespace prism {
 
-using Rgb = glm::vec3; // float RGB radiance, as SPEC 2 keeps it per pixel
+using Rgb = glm::vec3; // float RGB radiance, as image formation keeps it per pixel
 
 // Radiance beyond the largest float (3.4e38) is stored as the largest float,
 // so the film never holds an infinity: avgmax and the exposure stay finite

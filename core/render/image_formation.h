@@ -1,4 +1,4 @@
-// The passes of SPEC 2, each its own function so each can be tested and reused
+// The passes of image formation (docs/image-formation.md), each its own function so each can be tested and reused
 // by the progressive previewer: pixel centres, avgmax, the supersampling
 // decision, and the 4x4 supersampling itself. They work on tiles, the unit of
 // parallel work.
@@ -46,7 +46,7 @@ void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pix
 // the same for any thread count.
 double averageMax(const std::vector<Rgb>& radiance);
 
-// SPEC 2 step 2: true when some 4-neighbour's pass-1 colour differs by more than
+// Pass 2's decision: true when some 4-neighbour's pass-1 colour differs by more than
 // avgmax * thresh in Euclidean RGB distance (strictly greater).
 bool needsSupersampling(const Film& film, int x, int y, double avgmax, double thresh);
 

@@ -1,4 +1,4 @@
-// Rays actually traced, by kind (SPEC 3 and 1.6). Each render thread keeps its
+// Rays actually traced, by kind (docs/statistics.md). Each render thread keeps its
 // own counts and they are summed at the end, so totals never depend on timing.
 #pragma once
 

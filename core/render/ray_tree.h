@@ -34,7 +34,7 @@ struct RayTreeNode {
   bool leaving = false;
   bool totalInternalReflection = false;
   std::vector<LightTerm> lights;
-  // The four terms of SPEC 1.1, already multiplied by their coefficients.
+  // The four terms of the shading formula (docs/rendering-model.md), already multiplied by their coefficients.
   Color ambientDiffuse{0.0}; // C_mat kdr [I_a + sum diffuse]
   Color highlight{0.0};      // ksr sum specular
   Color reflected{0.0};      // ksr I_r

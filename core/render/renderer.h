@@ -1,4 +1,4 @@
-// A complete render of SPEC 2 on all cores: pass 1 over tiles, avgmax, pass 2
+// A complete render (docs/image-formation.md) on all cores: pass 1 over tiles, avgmax, pass 2
 // over tiles. The picture is the same for any thread count: every pixel's value
 // depends only on the scene and settings, and counts are summed per worker.
 #pragma once

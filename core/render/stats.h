@@ -1,4 +1,4 @@
-// The statistics every render reports (SPEC 3), as text for people (stderr)
+// The statistics every render reports (docs/statistics.md), as text for people (stderr)
 // and JSON for programs (--stats-json).
 #pragma once
 

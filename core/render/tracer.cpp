@@ -106,7 +106,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   const Material& m = scene_.material(hit.primitive);
   const Vec3 point = ray.at(hit.t);
   const Vec3 normal = outwardNormal(scene_, hit.primitive, point);
-  // SPEC 1.3/1.4: leaving iff N.D > 0; shade with the normal facing the ray.
+  // Leaving iff N.D > 0; shade with the normal facing the ray.
   // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(normal, ray.dir) > 0.0;
   const Vec3 g = leaving ? -normal : normal;

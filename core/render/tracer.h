@@ -1,4 +1,4 @@
-// The recursive tracer of SPEC 1: one ray in, the radiance flowing back along it
+// The recursive tracer of docs/rendering-model.md: one ray in, the radiance flowing back along it
 // out. A Tracer is used by one thread at a time (make one per tile: it is
 // cheap): it remembers, per light and depth, the primitive that last blocked a
 // shadow ray and tries it first on the next one, since neighbouring points
@@ -19,8 +19,8 @@ namespace prism {
 
 // Origins of rays that leave a surface are moved off it along the normal by this
 // fraction of the magnitude of the coordinates involved. Round-off in a hit point
-// is proportional to those magnitudes, so the offset scales with the scene (SPEC
-// 1.5): the same picture at 1e-4 and at 1e4 units, no shadow acne.
+// is proportional to those magnitudes, so the offset scales with the scene (docs/
+// rendering-model.md): the same picture at 1e-4 and at 1e4 units, no shadow acne.
 inline constexpr double kRayOffsetScale = 1e-9;
 
 class Tracer {

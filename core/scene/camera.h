@@ -1,4 +1,4 @@
-// The pinhole camera of SPEC 1.6: `fov` is the full vertical angle, the image
+// The pinhole camera (docs/image-formation.md): `fov` is the full vertical angle, the image
 // plane's edges are the image borders, pixels are square.
 #pragma once
 

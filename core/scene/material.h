@@ -1,5 +1,5 @@
-// The surface model of SPEC 1.1: colour, three coefficients, an exponent and an
-// index of refraction. Defaults are the `surface` defaults of SPEC 4.
+// The surface model (docs/rendering-model.md): colour, three coefficients, an exponent and an
+// index of refraction. Defaults are the `surface` defaults of docs/scene-language.md.
 #pragma once
 
 #include "core/math/math.h"

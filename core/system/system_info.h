@@ -1,4 +1,4 @@
-// Facts about the machine and the process that statistics report (SPEC 3).
+// Facts about the machine and the process that statistics report (docs/statistics.md).
 #pragma once
 
 #include <string>

@@ -190,8 +190,8 @@ TEST_P(RadianceFingerprint, SameUnderEveryAccelAndThreadCount) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, RadianceFingerprint, ::testing::ValuesIn(cases()),
-                         [](const auto& info) {
-                           std::string n = info.param.name;
+                         [](const ::testing::TestParamInfo<Case>& test) {
+                           std::string n = test.param.name;
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });

@@ -146,6 +146,34 @@ TEST(Convert, DecomposeRebuildsTheMap) {
   }
 }
 
+// A flat ellipsoid (axes 2, 1 and 1e-9 in rotated directions) is written back
+// with its map intact: the thin axis too, which the eigenvectors of a^T a lost
+// (they gave axes 2.04, 1.02 and 1.17e-9). The map is compared entry by entry
+// with the one the parser built from the file: independent of the writer.
+TEST(Convert, FlatEllipsoidKeepsItsMap) {
+  const Scene a =
+      parseScene("rotate 1 2 3 40 scale 2 1 1e-9 rotate 3 1 2 70 sphere 0 0 0 1\n", "in.sc");
+  ASSERT_EQ(a.ellipsoids.size(), 1u);
+  const Scene b = roundTrip(a);
+  ASSERT_EQ(b.ellipsoids.size(), 1u);
+  const Mat3& ma = a.ellipsoids[0].objectToWorld;
+  const Mat3& mb = b.ellipsoids[0].objectToWorld;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_LE(glm::length(ma[c] - mb[c]), 1e-14) << "column " << c;
+  // The thin direction survives: the map of the unit normal of the thin axis.
+  const Vec3 thin = glm::normalize(glm::cross(ma * Vec3(1, 0, 0), ma * Vec3(0, 1, 0)));
+  EXPECT_NEAR(glm::length(glm::inverse(mb) * thin), 1e9, 1e2);
+}
+
+// Singular values spread over 300 orders of magnitude (a map the parser would
+// refuse for an ellipsoid, but decompose itself must not fail): exact for a
+// diagonal map, no NaN.
+TEST(Convert, DecomposeKeepsTinySingularValues) {
+  const RotationScaleRotation d =
+      decompose(Mat3(Vec3(0.9, 0, 0), Vec3(0, 1e-300, 0), Vec3(0, 0, 0.9)));
+  EXPECT_EQ(d.scale, Vec3(0.9, 1e-300, 0.9));
+}
+
 // The command line.
 class ConvertCli : public ::testing::Test {
 protected:

@@ -56,6 +56,35 @@ TEST(SmoothTriangle, HitsInsideMissesOutsideBothSides) {
   EXPECT_NEAR(glm::length(geometricNormal(t, f.vertices.data()) - Vec3(0, 0, 1)), 0.0, 1e-15);
 }
 
+// From an origin 10^13 away (a ray reflected off a huge sphere, found by
+// fuzz_sc), rays aimed a tenth of a unit inside and outside each edge of the
+// unit triangle: the answer must be right to the precision of the origin
+// itself (about 0.002 at 10^13). The 3D edge functions once cancelled twice
+// and judged such rays wrong by whole units.
+TEST(SmoothTriangle, FarOriginJudgesEdgesToTheOriginsPrecision) {
+  const Fixture f;
+  const Triangle t = f.flat();
+  const Vec3 origin(2.96637e12, 2.96637e12, 9.5486e12);
+  struct Aim {
+    Vec3 target;
+    bool inside;
+  };
+  const Aim aims[] = {
+      {{0.25, 0.25, 0}, true},  {{0.1, 0.5, 0}, true},     {{0.5, 0.1, 0}, true},
+      {{0.45, 0.45, 0}, true},  {{-0.1, 0.5, 0}, false},   {{0.5, -0.1, 0}, false},
+      {{0.55, 0.55, 0}, false}, {{-0.5, -0.72, 0}, false}, {{0.75, 0.75, 0}, false},
+  };
+  for (const Aim& aim : aims) {
+    double hit = 0;
+    const Ray r = ray(origin, aim.target - origin);
+    EXPECT_EQ(intersect(t, f.vertices.data(), r, Interval{}, hit), aim.inside)
+        << "aimed at (" << aim.target.x << ", " << aim.target.y << ")";
+    if (aim.inside) {
+      EXPECT_NEAR(hit, glm::length(aim.target - origin), 0.01);
+    }
+  }
+}
+
 // Rays crossing the diagonal shared by two triangles of a square, in steps
 // far finer than round-off matters: every one hits one of the two.
 TEST(SmoothTriangle, SharedEdgeIsWatertight) {

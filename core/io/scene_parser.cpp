@@ -592,6 +592,10 @@ void Parser::sphere(Command& c) {
     error(c.keyword, outsideModelRangeMessage("sphere"));
     return;
   }
+  if (!(stretchRatioBound(e.objectToWorld) <= kMaxStretchRatio)) {
+    error(c.keyword, tooUnevenMessage("sphere"));
+    return;
+  }
   e.material = currentMaterial();
   e.origin = origin(c);
   scene_.ellipsoids.push_back(e);
@@ -678,6 +682,12 @@ void Parser::cone(Command& c) {
   }
   if (!withinModelRange(cone.bounds)) {
     error(c.keyword, outsideModelRangeMessage("cone"));
+    return;
+  }
+  // An elliptic cone is written back through its frame's map (see
+  // scene_writer.cpp), which must stay well conditioned; a circular one is not.
+  if (!isCircular(cone) && !(stretchRatioBound(cone.objectToWorld) <= kMaxStretchRatio)) {
+    error(c.keyword, tooUnevenMessage("cone"));
     return;
   }
   cone.material = currentMaterial();

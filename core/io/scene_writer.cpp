@@ -118,11 +118,10 @@ private:
       break;
     }
     case PrimitiveKind::Ellipsoid: {
-      // The unit sphere under the inverse of worldToObject.
+      // The unit sphere under objectToWorld.
       const Ellipsoid& e = scene_.ellipsoids[ref.index];
-      const Mat3 a = glm::inverse(e.worldToObject);
       line(depth) << "push\n";
-      placed(a, -(a * e.worldToObjectOffset), depth + 1);
+      placed(e.objectToWorld, e.center, depth + 1);
       line(depth + 1) << "sphere 0 0 0 1\n";
       line(depth) << "pop\n";
       break;

@@ -8,33 +8,9 @@ namespace prism {
 
 namespace {
 
-// Cyclic Jacobi rotations: the eigenvectors (columns of `vectors`) and
-// eigenvalues of a symmetric 3x3 matrix, to full double precision.
-void symmetricEigen(Mat3 m, Mat3& vectors, Vec3& values) {
-  vectors = Mat3(1.0);
-  for (int sweep = 0; sweep < 64; ++sweep) {
-    const double off = m[0][1] * m[0][1] + m[0][2] * m[0][2] + m[1][2] * m[1][2];
-    const double diag = m[0][0] * m[0][0] + m[1][1] * m[1][1] + m[2][2] * m[2][2];
-    if (off <= 1e-32 * diag) break;
-    for (int p = 0; p < 2; ++p) {
-      for (int q = p + 1; q < 3; ++q) {
-        if (m[p][q] == 0.0) continue;
-        const double theta = (m[q][q] - m[p][p]) / (2.0 * m[p][q]);
-        const double t =
-            std::copysign(1.0, theta) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
-        Mat3 r(1.0); // rotation in the (p, q) plane
-        r[p][p] = c;
-        r[q][q] = c;
-        r[q][p] = s; // column q, row p
-        r[p][q] = -s;
-        m = glm::transpose(r) * m * r;
-        vectors = vectors * r;
-      }
-    }
-  }
-  values = Vec3(m[0][0], m[1][1], m[2][2]);
-}
+// |x| without squaring the components themselves: no underflow for vectors of
+// 1e-300, no overflow for vectors of 1e300.
+double norm(const Vec3& x) { return std::hypot(x.x, x.y, x.z); }
 
 // Makes the columns exactly orthonormal and right-handed.
 Mat3 orthonormalise(const Mat3& m) {
@@ -45,18 +21,46 @@ Mat3 orthonormalise(const Mat3& m) {
 
 } // namespace
 
+// One-sided Jacobi (Hestenes): plane rotations v applied to the columns of
+// w = a v until every two columns are orthogonal; then the column lengths are
+// the singular values and the normalised columns are u. Unlike the
+// eigenvectors of a^T a, which square the condition number and lose a small
+// singular value below 1e-8 of the largest (and underflow it to zero below
+// 1e-154, giving NaN), this keeps every singular value to high relative
+// precision: a sphere scaled by 1e-300 along one axis is written back as such.
 RotationScaleRotation decompose(const Mat3& a) {
+  Mat3 w = a;
+  Mat3 v(1.0);
+  for (int sweep = 0; sweep < 64; ++sweep) {
+    bool rotated = false;
+    for (int p = 0; p < 2; ++p) {
+      for (int q = p + 1; q < 3; ++q) {
+        const double np = norm(w[p]), nq = norm(w[q]);
+        if (np == 0.0 || nq == 0.0) continue;
+        const double cosine = glm::dot(w[p] / np, w[q] / nq);
+        if (!(std::abs(cosine) > 1e-15)) continue; // orthogonal to round-off
+        rotated = true;
+        // The rotation that diagonalises [[np^2, g], [g, nq^2]], g = np nq cosine,
+        // written with ratios of the lengths so nothing is squared.
+        const double zeta = (nq / np - np / nq) / (2.0 * cosine);
+        const double t = std::copysign(1.0, zeta) / (std::abs(zeta) + std::hypot(1.0, zeta));
+        const double c = 1.0 / std::hypot(1.0, t), s = c * t;
+        const Vec3 wp = w[p], vp = v[p];
+        w[p] = c * wp - s * w[q];
+        w[q] = s * wp + c * w[q];
+        v[p] = c * vp - s * v[q];
+        v[q] = s * vp + c * v[q];
+      }
+    }
+    if (!rotated) break;
+  }
   RotationScaleRotation out;
-  Vec3 values;
-  symmetricEigen(glm::transpose(a) * a, out.v, values);
-  out.v = orthonormalise(out.v);
-  // a v = u diag(scale): the columns of a v, normalised, are u.
-  const Mat3 av = a * out.v;
-  for (int i = 0; i < 3; ++i)
-    out.scale[i] = glm::length(av[i]);
   Mat3 u;
-  for (int i = 0; i < 3; ++i)
-    u[i] = av[i] / out.scale[i];
+  for (int i = 0; i < 3; ++i) {
+    out.scale[i] = norm(w[i]);
+    u[i] = w[i] / out.scale[i];
+  }
+  out.v = orthonormalise(v); // a product of rotations: already right-handed
   out.u = orthonormalise(u);
   // orthonormalise made u right-handed; a mirroring map keeps its mirror in
   // the sign of the last scale factor.

@@ -11,6 +11,7 @@
 #include "core/math/aabb.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace prism {
@@ -33,6 +34,26 @@ inline bool withinModelRange(const Aabb& box) {
 inline std::string outsideModelRangeMessage(const std::string& what) {
   return what + ": lies outside the supported range: world coordinates (after the current " +
          "transform) must be within +-" + kMaxCoordinateText;
+}
+
+// How unevenly the map of an ellipsoid or a sheared cone may stretch space:
+// its condition number (largest over smallest singular value), bounded above by
+// stretchRatioBound. Beyond 1e10 the shape is thinner than the offset by which
+// rays leave a surface (1e-9 of the coordinates, see Tracer), so reflections
+// and shadows would start on its far side; and near 1e16 the map is singular to
+// double precision, so it could not even be written back and read again.
+inline constexpr double kMaxStretchRatio = 1e10;
+inline constexpr const char* kMaxStretchRatioText = "1e10";
+
+// |m| |m^-1| in the Frobenius norm, computed without under- or overflowing
+// the squares: at least the condition number of m and at most 3 times it.
+// Infinite (or NaN) when m is singular to double precision.
+double stretchRatioBound(const Mat3& m);
+
+// The message a reader gives for `what` (e.g. "sphere") stretched too unevenly.
+inline std::string tooUnevenMessage(const std::string& what) {
+  return what + ": the current transform stretches it too unevenly: one direction more than " +
+         std::string(kMaxStretchRatioText) + " times another";
 }
 
 } // namespace prism

@@ -1,6 +1,7 @@
 #include "core/shapes/geometry.h"
 
 #include <array>
+#include <cmath>
 
 namespace prism {
 
@@ -138,10 +139,13 @@ Ellipsoid makeEllipsoid(const Mat3& linear, const Vec3& offset) {
   e.worldToObject = glm::inverse(linear);
   e.worldToObjectOffset = -(e.worldToObject * offset);
   e.normalToWorld = glm::transpose(e.worldToObject);
-  // The unit sphere's image extends sqrt(sum_j A_ij^2) along world axis i.
-  const Mat3 rowsAsColumns = glm::transpose(linear);
-  const Vec3 half(glm::length(rowsAsColumns[0]), glm::length(rowsAsColumns[1]),
-                  glm::length(rowsAsColumns[2]));
+  e.objectToWorld = linear;
+  e.center = offset;
+  // The unit sphere's image extends sqrt(sum_j A_ij^2) along world axis i
+  // (hypot: no underflow for a very flat ellipsoid).
+  const Mat3& m = linear;
+  const Vec3 half(std::hypot(m[0].x, m[1].x, m[2].x), std::hypot(m[0].y, m[1].y, m[2].y),
+                  std::hypot(m[0].z, m[1].z, m[2].z));
   e.bounds.extend(offset - half);
   e.bounds.extend(offset + half);
   return e;

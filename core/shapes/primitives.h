@@ -40,12 +40,16 @@ struct Sphere {
 
 // A sphere under a non-uniform scale: the image of the unit sphere under an
 // affine map. Stored as the inverse map, which takes rays into the unit sphere's
-// space, and the matrix that carries object normals back to world space.
+// space, and the matrix that carries object normals back to world space; the
+// map itself is kept too, for writing the ellipsoid back as text (inverting the
+// inverse overflows for very flat ellipsoids).
 struct Ellipsoid {
   Mat3 worldToObject{1.0};
   Vec3 worldToObjectOffset{0.0};
   Mat3 normalToWorld{1.0}; // transpose of worldToObject
   Aabb bounds;
+  Mat3 objectToWorld{1.0};
+  Vec3 center{0.0}; // objectToWorld's offset
   std::uint32_t material = 0;
   Origin origin;
 };

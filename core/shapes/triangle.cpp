@@ -6,13 +6,36 @@ namespace prism {
 
 namespace {
 
-// The ray's signed crossing of edge p -> q: dot(d, (p - o) x (q - o)). The
-// cross product of swapped operands is the exact negation (each component is
-// a difference of two products, computed in the opposite order), so the
-// neighbour sharing this edge, which walks it q -> p, sees exactly -value.
-double edgeFunction(const Vec3& p, const Vec3& q, const Ray& ray) {
-  return glm::dot(ray.dir, glm::cross(p - ray.origin, q - ray.origin));
-}
+// The vertices as the ray sees them: each moved by -origin and projected
+// along the ray onto a plane containing it, in 2D. The two coordinates are the
+// components of (v - o) x d on the axes other than d's largest, so the
+// projection never degenerates, and each is one difference of two products:
+// accurate to the rounding of v - o itself, however far the origin is. (The
+// 3D edge function dot(d, (p - o) x (q - o)) cancels twice, and at an origin
+// 10^13 away from a triangle of size 1 misjudged rays by whole units.)
+struct Projected {
+  double x, y;
+};
+
+struct RayProjection {
+  int kx, ky, kz;
+  explicit RayProjection(const Vec3& d) {
+    const Vec3 m = glm::abs(d);
+    kz = m.x >= m.y ? (m.x >= m.z ? 0 : 2) : (m.y >= m.z ? 1 : 2);
+    kx = (kz + 1) % 3;
+    ky = (kz + 2) % 3;
+  }
+  Projected operator()(const Vec3& v, const Ray& ray) const {
+    const Vec3 p = v - ray.origin;
+    return {p[kx] * ray.dir[kz] - p[kz] * ray.dir[kx], p[ky] * ray.dir[kz] - p[kz] * ray.dir[ky]};
+  }
+};
+
+// The ray's signed crossing of edge p -> q, from the projected vertices. The
+// neighbour sharing this edge walks it q -> p and computes the same two
+// products subtracted the other way round: exactly -value, so a ray can never
+// slip between two triangles of a mesh.
+double edgeFunction(Projected p, Projected q) { return p.x * q.y - p.y * q.x; }
 
 } // namespace
 
@@ -35,9 +58,11 @@ bool intersect(const Triangle& tri, const Vec3* vertices, const Ray& ray, Interv
   const Vec3& a = vertices[tri.vertex[0]];
   const Vec3& b = vertices[tri.vertex[1]];
   const Vec3& c = vertices[tri.vertex[2]];
-  const double ea = edgeFunction(b, c, ray); // weight of a
-  const double eb = edgeFunction(c, a, ray);
-  const double ec = edgeFunction(a, b, ray);
+  const RayProjection project(ray.dir);
+  const Projected pa = project(a, ray), pb = project(b, ray), pc = project(c, ray);
+  const double ea = edgeFunction(pb, pc); // weight of a
+  const double eb = edgeFunction(pc, pa);
+  const double ec = edgeFunction(pa, pb);
   // Inside when all three agree in sign (either sign: two-sided). A zero is
   // on an edge and counts for both neighbours; the nearest-hit tie-break then
   // picks one of them, the same one whatever the traversal order.

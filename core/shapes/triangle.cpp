@@ -17,25 +17,31 @@ struct Projected {
   double x, y;
 };
 
-struct RayProjection {
-  int kx, ky, kz;
-  explicit RayProjection(const Vec3& d) {
-    const Vec3 m = glm::abs(d);
-    kz = m.x >= m.y ? (m.x >= m.z ? 0 : 2) : (m.y >= m.z ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kz + 2) % 3;
-  }
-  Projected operator()(const Vec3& v, const Ray& ray) const {
-    const Vec3 p = v - ray.origin;
-    return {p[kx] * ray.dir[kz] - p[kz] * ray.dir[kx], p[ky] * ray.dir[kz] - p[kz] * ray.dir[ky]};
-  }
-};
-
 // The ray's signed crossing of edge p -> q, from the projected vertices. The
 // neighbour sharing this edge walks it q -> p and computes the same two
 // products subtracted the other way round: exactly -value, so a ray can never
 // slip between two triangles of a mesh.
 double edgeFunction(Projected p, Projected q) { return p.x * q.y - p.y * q.x; }
+
+// Whether the ray passes inside the triangle (on either side; a zero is on an
+// edge and counts for both neighbours: the nearest-hit tie-break then picks
+// one, the same whatever the traversal order). `kz` is the axis of d's
+// largest component, a template argument so each projection is straight code.
+template <int kz> bool passesInside(const Vec3& a, const Vec3& b, const Vec3& c, const Ray& ray) {
+  constexpr int kx = (kz + 1) % 3, ky = (kz + 2) % 3;
+  const Vec3& d = ray.dir;
+  const auto project = [&](const Vec3& v) {
+    const Vec3 p = v - ray.origin;
+    return Projected{p[kx] * d[kz] - p[kz] * d[kx], p[ky] * d[kz] - p[kz] * d[ky]};
+  };
+  const Projected pa = project(a), pb = project(b), pc = project(c);
+  const double ea = edgeFunction(pb, pc); // weight of a
+  const double eb = edgeFunction(pc, pa);
+  const double ec = edgeFunction(pa, pb);
+  const bool front = ea >= 0.0 && eb >= 0.0 && ec >= 0.0;
+  const bool back = ea <= 0.0 && eb <= 0.0 && ec <= 0.0;
+  return front || back;
+}
 
 } // namespace
 
@@ -58,17 +64,11 @@ bool intersect(const Triangle& tri, const Vec3* vertices, const Ray& ray, Interv
   const Vec3& a = vertices[tri.vertex[0]];
   const Vec3& b = vertices[tri.vertex[1]];
   const Vec3& c = vertices[tri.vertex[2]];
-  const RayProjection project(ray.dir);
-  const Projected pa = project(a, ray), pb = project(b, ray), pc = project(c, ray);
-  const double ea = edgeFunction(pb, pc); // weight of a
-  const double eb = edgeFunction(pc, pa);
-  const double ec = edgeFunction(pa, pb);
-  // Inside when all three agree in sign (either sign: two-sided). A zero is
-  // on an edge and counts for both neighbours; the nearest-hit tie-break then
-  // picks one of them, the same one whatever the traversal order.
-  const bool front = ea >= 0.0 && eb >= 0.0 && ec >= 0.0;
-  const bool back = ea <= 0.0 && eb <= 0.0 && ec <= 0.0;
-  if (!front && !back) return false;
+  const Vec3 m = glm::abs(ray.dir);
+  const bool inside =
+      m.x >= m.y ? (m.x >= m.z ? passesInside<0>(a, b, c, ray) : passesInside<2>(a, b, c, ray))
+                 : (m.y >= m.z ? passesInside<1>(a, b, c, ray) : passesInside<2>(a, b, c, ray));
+  if (!inside) return false;
   const Vec3 n = glm::cross(b - a, c - a);
   const double denom = glm::dot(n, ray.dir);
   if (denom == 0.0) return false; // in the plane, or all three zero: no area is hit

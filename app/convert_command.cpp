@@ -36,11 +36,19 @@ int runConvertCommand(const ConvertCommandOptions& o) {
   if (!succeeds([&] { saveScene(o.output, scene, "Converted by prism convert from " + o.input); }))
     return kExitFailure;
   if (!o.quiet) {
-    std::cerr << "wrote " << o.output << ": " << scene.primitiveCount() << " primitives ("
-              << scene.spheres.size() + scene.ellipsoids.size() << " spheres, "
-              << scene.polygons.size() << " polygons, " << scene.cones.size() << " cones, "
-              << scene.triangles.size() << " triangles), " << scene.lights.size() << " lights, "
-              << scene.materials.size() << " materials\n";
+    // The count of every kind, from the list of kinds ("2 spheres, 1 cone").
+    std::string kinds;
+    std::apply(
+        [&]<class... Kinds>(const std::vector<Kinds>&... all) {
+          ((kinds += all.empty() ? ""
+                                 : (kinds.empty() ? "" : ", ") + std::to_string(all.size()) + " " +
+                                       Kinds::kName + (all.size() == 1 ? "" : "s")),
+           ...);
+        },
+        scene.storage.vectors);
+    std::cerr << "wrote " << o.output << ": " << scene.primitiveCount() << " primitives"
+              << (kinds.empty() ? "" : " (" + kinds + ")") << ", " << scene.lights.size()
+              << " lights, " << scene.materials.size() << " materials\n";
   }
   return kExitOk;
 }

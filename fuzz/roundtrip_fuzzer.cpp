@@ -71,11 +71,11 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
     c.same("light positions", a.lights[i].position, b.lights[i].position);
     c.same("light intensities", a.lights[i].intensity, b.lights[i].intensity);
   }
-  c.same("sphere counts", a.spheres.size(), b.spheres.size());
-  c.same("ellipsoid counts", a.ellipsoids.size(), b.ellipsoids.size());
-  c.same("polygon counts", a.polygons.size(), b.polygons.size());
-  c.same("cone counts", a.cones.size(), b.cones.size());
-  c.same("triangle counts", a.triangles.size(), b.triangles.size());
+  c.same("sphere counts", a.shapes<Sphere>().size(), b.shapes<Sphere>().size());
+  c.same("ellipsoid counts", a.shapes<Ellipsoid>().size(), b.shapes<Ellipsoid>().size());
+  c.same("polygon counts", a.shapes<Polygon>().size(), b.shapes<Polygon>().size());
+  c.same("cone counts", a.shapes<Cone>().size(), b.shapes<Cone>().size());
+  c.same("triangle counts", a.shapes<Triangle>().size(), b.shapes<Triangle>().size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
@@ -89,13 +89,15 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
     const Aabb boxA = a.bounds(ra), boxB = b.bounds(rb);
     const double size = maxAbsComponent(boxA.hi - boxA.lo);
     switch (ra.kind) {
-    case PrimitiveKind::Sphere:
-      c.same("sphere centres", a.spheres[ra.index].center, b.spheres[rb.index].center);
-      c.same("sphere radii", a.spheres[ra.index].radius, b.spheres[rb.index].radius);
+    case kindOf<Sphere>:
+      c.same("sphere centres", a.shapes<Sphere>()[ra.index].center,
+             b.shapes<Sphere>()[rb.index].center);
+      c.same("sphere radii", a.shapes<Sphere>()[ra.index].radius,
+             b.shapes<Sphere>()[rb.index].radius);
       break;
-    case PrimitiveKind::Polygon: {
-      const Polygon& pa = a.polygons[ra.index];
-      const Polygon& pb = b.polygons[rb.index];
+    case kindOf<Polygon>: {
+      const Polygon& pa = a.shapes<Polygon>()[ra.index];
+      const Polygon& pb = b.shapes<Polygon>()[rb.index];
       c.same("polygon vertex counts", pa.vertexCount, pb.vertexCount);
       for (std::uint32_t i = 0; i < std::min(pa.vertexCount, pb.vertexCount); ++i) {
         c.same("polygon vertices", a.polygonVertices[pa.firstVertex + i],
@@ -103,9 +105,9 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
       }
       break;
     }
-    case PrimitiveKind::Triangle: {
-      const Triangle& ta = a.triangles[ra.index];
-      const Triangle& tb = b.triangles[rb.index];
+    case kindOf<Triangle>: {
+      const Triangle& ta = a.shapes<Triangle>()[ra.index];
+      const Triangle& tb = b.shapes<Triangle>()[rb.index];
       c.same("triangle smoothness", ta.smooth(), tb.smooth());
       for (std::size_t i = 0; i < 3 && !c.problem(); ++i) {
         c.same("triangle vertices", a.meshVertices[ta.vertex[i]], b.meshVertices[tb.vertex[i]]);
@@ -115,8 +117,8 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
       }
       break;
     }
-    case PrimitiveKind::Ellipsoid:
-    case PrimitiveKind::Cone:
+    case kindOf<Ellipsoid>:
+    case kindOf<Cone>:
       c.near("ellipsoid or cone bounds (lo)", boxA.lo, boxB.lo, size);
       c.near("ellipsoid or cone bounds (hi)", boxA.hi, boxB.hi, size);
       break;

@@ -89,15 +89,15 @@ Scene randomScene(std::mt19937& rng, int primitives, int groups) {
       break;
     }
     case 5: { // an exact duplicate of an earlier primitive: a tie to break
-      if (!scene.polygons.empty() && u(rng) < 0) {
-        const Polygon& p =
-            scene.polygons[std::size_t(std::abs(u(rng)) * double(scene.polygons.size() - 1))];
+      if (!scene.shapes<Polygon>().empty() && u(rng) < 0) {
+        const Polygon& p = scene.shapes<Polygon>()[std::size_t(
+            std::abs(u(rng)) * double(scene.shapes<Polygon>().size() - 1))];
         std::vector<Vec3> v(scene.polygonVertices.begin() + p.firstVertex,
                             scene.polygonVertices.begin() + p.firstVertex + p.vertexCount);
         addPolygon(scene, v, mat, g);
-      } else if (!scene.spheres.empty()) {
-        const Sphere s =
-            scene.spheres[std::size_t(std::abs(u(rng)) * double(scene.spheres.size() - 1))];
+      } else if (!scene.shapes<Sphere>().empty()) {
+        const Sphere s = scene.shapes<Sphere>()[std::size_t(
+            std::abs(u(rng)) * double(scene.shapes<Sphere>().size() - 1))];
         addSphere(scene, s.center, s.radius, mat, g);
       }
       break;
@@ -200,7 +200,7 @@ TEST(Accel, EveryModeMatchesBruteForceOnRandomRays) {
       // skipping the polygon it leaves half of the time (as the tracer does).
       const Ray onSurface{ray.at(h.t), randomDirection(rng)};
       const PrimitiveRef* skip =
-          h.primitive.kind == PrimitiveKind::Polygon && i % 2 == 0 ? &h.primitive : nullptr;
+          h.primitive.kind == kindOf<Polygon> && i % 2 == 0 ? &h.primitive : nullptr;
       expectSameHit(scene, accels, *brute, onSurface, Interval{}, skip, tally);
       ++surfaceStarts;
     }
@@ -247,8 +247,8 @@ TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {
       if (corner != from)
         expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(corner - from)}, Interval{},
                       nullptr, tally);
-      if (target.kind == PrimitiveKind::Polygon) {
-        const Polygon& p = scene.polygons[target.index];
+      if (target.kind == kindOf<Polygon>) {
+        const Polygon& p = scene.shapes<Polygon>()[target.index];
         const Vec3 v = scene.polygonVertices[p.firstVertex + std::uint32_t(i) % p.vertexCount];
         if (v != from)
           expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(v - from)}, Interval{},
@@ -256,8 +256,8 @@ TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {
       }
       // Tangent to a sphere: through the point at exactly its radius off the
       // centre, perpendicular to the offset.
-      if (target.kind == PrimitiveKind::Sphere) {
-        const Sphere& s = scene.spheres[target.index];
+      if (target.kind == kindOf<Sphere>) {
+        const Sphere& s = scene.shapes<Sphere>()[target.index];
         const Vec3 n = randomUnit(rng);
         Vec3 t = glm::cross(n, randomUnit(rng));
         if (glm::dot(t, t) > 1e-6) {
@@ -295,7 +295,7 @@ TEST(Accel, AnyHitAgreesWithClosestHitOnOcclusion) {
         const bool blocked = accel->closestHit(ray, range, nullptr, h);
         EXPECT_EQ(accel->anyHit(ray, range, nullptr), blocked) << accelKindName(kind);
         // The blocker it names really lies on the ray inside the range.
-        PrimitiveRef blocker{PrimitiveKind::Sphere, 0xffffffffu};
+        PrimitiveRef blocker{kindOf<Sphere>, 0xffffffffu};
         EXPECT_EQ(accel->anyHit(ray, range, nullptr, &blocker), blocked);
         if (blocked) {
           double t;
@@ -333,7 +333,7 @@ TEST(Accel, GeneratedScenesMatchBruteForce) {
       if (expectSameHit(scene, accels, *brute, ray, Interval{}, nullptr, tally, &h)) {
         const Ray onSurface{ray.at(h.t), randomDirection(rng)};
         expectSameHit(scene, accels, *brute, onSurface, Interval{},
-                      h.primitive.kind == PrimitiveKind::Polygon ? &h.primitive : nullptr, tally);
+                      h.primitive.kind == kindOf<Polygon> ? &h.primitive : nullptr, tally);
       }
     }
   }
@@ -577,20 +577,20 @@ TEST(Generators, TheScaledSoupIsTheSoupAtAFinerGrainStoredInSpatialOrder) {
   for (std::size_t n : {1000u, 8000u}) {
     const Scene scaled = makeScaledPolygonSoup(n);
     const Scene random = makePolygonSoup(n);
-    ASSERT_EQ(scaled.polygons.size(), n);
-    ASSERT_EQ(random.polygons.size(), n);
+    ASSERT_EQ(scaled.shapes<Polygon>().size(), n);
+    ASSERT_EQ(random.shapes<Polygon>().size(), n);
     // Circumradius three quarters of the mean spacing (8 / n)^(1/3).
     const double radius = 0.75 * std::cbrt(8.0 / double(n));
     auto centre = [](const Scene& s, std::size_t i) {
-      const Vec3* v = &s.polygonVertices[s.polygons[i].firstVertex];
+      const Vec3* v = &s.polygonVertices[s.shapes<Polygon>()[i].firstVertex];
       return (v[0] + v[1] + v[2]) / 3.0;
     };
     double stepScaled = 0.0, stepRandom = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 c = centre(scaled, i);
       EXPECT_LE(maxAbsComponent(c), 1.0);
-      EXPECT_NEAR(glm::distance(c, scaled.polygonVertices[scaled.polygons[i].firstVertex]), radius,
-                  1e-12);
+      EXPECT_NEAR(glm::distance(c, scaled.polygonVertices[scaled.shapes<Polygon>()[i].firstVertex]),
+                  radius, 1e-12);
       if (i > 0) {
         stepScaled += glm::distance(c, centre(scaled, i - 1));
         stepRandom += glm::distance(centre(random, i), centre(random, i - 1));

@@ -152,16 +152,16 @@ TEST(Cone, ScLanguageWithTransforms) {
   const Scene s = parseScene("cone 0 0 0 1  0 0 2 1\n"
                              "push translate 5 0 0 scale 2 1 1 cone 0 0 0 1  0 0 1 0.5 pop\n",
                              "t.sc");
-  ASSERT_EQ(s.cones.size(), 2u);
-  EXPECT_TRUE(isCircular(s.cones[0]));
-  EXPECT_FALSE(isCircular(s.cones[1])); // an elliptic cone after the uneven scale
+  ASSERT_EQ(s.shapes<Cone>().size(), 2u);
+  EXPECT_TRUE(isCircular(s.shapes<Cone>()[0]));
+  EXPECT_FALSE(isCircular(s.shapes<Cone>()[1])); // an elliptic cone after the uneven scale
   double t = 0;
   // The elliptic one has semi-axis 2 along x at z = 0: a ray along -x at
   // z ~ 0 from x = 10 reaches x = 7 (= 5 + 2).
-  ASSERT_TRUE(intersect(s.cones[1], ray({10, 0, 1e-9}, {-1, 0, 0}), Interval{}, t));
+  ASSERT_TRUE(intersect(s.shapes<Cone>()[1], ray({10, 0, 1e-9}, {-1, 0, 0}), Interval{}, t));
   EXPECT_NEAR(t, 3.0, 1e-6);
   // ... and semi-axis 1 along y.
-  ASSERT_TRUE(intersect(s.cones[1], ray({5, 5, 1e-9}, {0, -1, 0}), Interval{}, t));
+  ASSERT_TRUE(intersect(s.shapes<Cone>()[1], ray({5, 5, 1e-9}, {0, -1, 0}), Interval{}, t));
   EXPECT_NEAR(t, 4.0, 1e-6);
 }
 

@@ -80,20 +80,21 @@ pp 3 -2 0 0 0 0.1 1  -1 0 0 0 0 1  -1.5 1 0 0.1 0 1
     EXPECT_EQ(b.lights[i].intensity, a.lights[i].intensity);
   }
   EXPECT_EQ(b.materials, a.materials);
-  ASSERT_EQ(b.spheres.size(), 1u);
-  EXPECT_EQ(b.spheres[0].center, a.spheres[0].center);
-  EXPECT_EQ(b.spheres[0].radius, a.spheres[0].radius);
-  ASSERT_EQ(b.polygons.size(), 1u);
+  ASSERT_EQ(b.shapes<Sphere>().size(), 1u);
+  EXPECT_EQ(b.shapes<Sphere>()[0].center, a.shapes<Sphere>()[0].center);
+  EXPECT_EQ(b.shapes<Sphere>()[0].radius, a.shapes<Sphere>()[0].radius);
+  ASSERT_EQ(b.shapes<Polygon>().size(), 1u);
   EXPECT_EQ(b.polygonVertices, a.polygonVertices);
-  EXPECT_EQ(b.polygons[0].normal, a.polygons[0].normal);
-  ASSERT_EQ(b.triangles.size(), 1u);
+  EXPECT_EQ(b.shapes<Polygon>()[0].normal, a.shapes<Polygon>()[0].normal);
+  ASSERT_EQ(b.shapes<Triangle>().size(), 1u);
   for (int i = 0; i < 3; ++i) {
-    EXPECT_EQ(b.meshVertices[b.triangles[0].vertex[i]], a.meshVertices[a.triangles[0].vertex[i]]);
-    EXPECT_NEAR(glm::length(b.meshNormals[b.triangles[0].normal[i]] -
-                            a.meshNormals[a.triangles[0].normal[i]]),
+    EXPECT_EQ(b.meshVertices[b.shapes<Triangle>()[0].vertex[i]],
+              a.meshVertices[a.shapes<Triangle>()[0].vertex[i]]);
+    EXPECT_NEAR(glm::length(b.meshNormals[b.shapes<Triangle>()[0].normal[i]] -
+                            a.meshNormals[a.shapes<Triangle>()[0].normal[i]]),
                 0.0, 1e-15);
   }
-  ASSERT_EQ(b.cones.size(), 1u);
+  ASSERT_EQ(b.shapes<Cone>().size(), 1u);
   expectSameHits(a, b, 1e-12);
   // Written once more, the text is the same: nothing drifts.
   EXPECT_EQ(text(b), text(a));
@@ -110,13 +111,13 @@ TEST(Convert, TransformedPrimitivesRoundTrip) {
                              "cone 3 0 0 0.5  3 1 0 0.5\n"
                              "ptriangle 0 0 3 0 0 1  1 0 3 0 0 1  0 1 3 0.2 0 1\n",
                              "in.sc");
-  ASSERT_EQ(a.ellipsoids.size(), 1u);
-  ASSERT_EQ(a.cones.size(), 2u);
-  EXPECT_FALSE(isCircular(a.cones[0]));
+  ASSERT_EQ(a.shapes<Ellipsoid>().size(), 1u);
+  ASSERT_EQ(a.shapes<Cone>().size(), 2u);
+  EXPECT_FALSE(isCircular(a.shapes<Cone>()[0]));
   const Scene b = roundTrip(a);
-  EXPECT_EQ(b.ellipsoids.size(), 1u);
-  EXPECT_EQ(b.cones.size(), 2u);
-  EXPECT_EQ(b.triangles.size(), 2u);
+  EXPECT_EQ(b.shapes<Ellipsoid>().size(), 1u);
+  EXPECT_EQ(b.shapes<Cone>().size(), 2u);
+  EXPECT_EQ(b.shapes<Triangle>().size(), 2u);
   EXPECT_EQ(b.groups.size(), a.groups.size() + 2); // + a push for the ellipsoid and the cone
   expectSameHits(a, b, 1e-9);
 }
@@ -153,11 +154,11 @@ TEST(Convert, DecomposeRebuildsTheMap) {
 TEST(Convert, FlatEllipsoidKeepsItsMap) {
   const Scene a =
       parseScene("rotate 1 2 3 40 scale 2 1 1e-9 rotate 3 1 2 70 sphere 0 0 0 1\n", "in.sc");
-  ASSERT_EQ(a.ellipsoids.size(), 1u);
+  ASSERT_EQ(a.shapes<Ellipsoid>().size(), 1u);
   const Scene b = roundTrip(a);
-  ASSERT_EQ(b.ellipsoids.size(), 1u);
-  const Mat3& ma = a.ellipsoids[0].objectToWorld;
-  const Mat3& mb = b.ellipsoids[0].objectToWorld;
+  ASSERT_EQ(b.shapes<Ellipsoid>().size(), 1u);
+  const Mat3& ma = a.shapes<Ellipsoid>()[0].objectToWorld;
+  const Mat3& mb = b.shapes<Ellipsoid>()[0].objectToWorld;
   for (int c = 0; c < 3; ++c)
     EXPECT_LE(glm::length(ma[c] - mb[c]), 1e-14) << "column " << c;
   // The thin direction survives: the map of the unit normal of the thin axis.
@@ -235,7 +236,7 @@ TEST_F(ConvertCli, ObjRendersAndConverts) {
   EXPECT_TRUE(fs::exists(dir_ / "m.tiff"));
   ASSERT_EQ(prism("convert -q '" + obj.string() + "' '" + (dir_ / "m.sc").string() + "'"), 0);
   const Scene s = loadScene(dir_ / "m.sc");
-  EXPECT_EQ(s.triangles.size(), 2u);
+  EXPECT_EQ(s.shapes<Triangle>().size(), 2u);
   EXPECT_EQ(s.materials[0].color, Color(0.2, 0.4, 0.8));
 }
 

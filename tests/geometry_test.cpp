@@ -5,7 +5,7 @@
 #include "core/accel/group_bvh.h"
 #include "core/math/transform.h"
 #include "core/scene/camera.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 #include "tests/scene_builder.h"
 #include "tests/test_expect.h"
 
@@ -850,7 +850,7 @@ TEST(GroupBvh, MatchesBruteForceOnRandomScenes) {
       ASSERT_TRUE(brute->closestHit(ray, range, nullptr, h));
       const Ray onSurface{ray.at(h.t), randomDirection(rng)};
       const PrimitiveRef* skip =
-          h.primitive.kind == PrimitiveKind::Polygon && i % 2 == 0 ? &h.primitive : nullptr;
+          h.primitive.kind == kindOf<Polygon> && i % 2 == 0 ? &h.primitive : nullptr;
       ++queries;
       ++surfaceStarts;
       compareQuery(scene, *bvh, *brute, onSurface, Interval{}, skip, ties);
@@ -894,11 +894,11 @@ TEST(GroupBvh, DeepAndWideNesting) {
   Hit h;
   ASSERT_TRUE(bvh->closestHit(Ray{Vec3(-5, 0, 0), Vec3(1, 0, 0)}, Interval{}, nullptr, h));
   EXPECT_DOUBLE_EQ(h.t, 4.0);
-  EXPECT_EQ(h.primitive, (PrimitiveRef{PrimitiveKind::Sphere, 0}));
+  EXPECT_EQ(h.primitive, (PrimitiveRef{kindOf<Sphere>, 0}));
   // From the far end backwards: sphere 149 (at x = 447) entered at x = 448.
   ASSERT_TRUE(bvh->closestHit(Ray{Vec3(500, 0, 0), Vec3(-1, 0, 0)}, Interval{}, nullptr, h));
   EXPECT_DOUBLE_EQ(h.t, 52.0);
-  EXPECT_EQ(h.primitive, (PrimitiveRef{PrimitiveKind::Sphere, 149}));
+  EXPECT_EQ(h.primitive, (PrimitiveRef{kindOf<Sphere>, 149}));
   // Straight down onto sphere k of the chain and of the wide group.
   for (std::uint32_t k = 0; k < 150; k += 7) {
     ASSERT_TRUE(bvh->closestHit(Ray{Vec3(3.0 * k, 0, 9), Vec3(0, 0, -1)}, Interval{}, nullptr, h));
@@ -943,13 +943,13 @@ TEST(GroupBvh, CoincidentSurfacesResolveToTheFirstPrimitive) {
          {Ray{Vec3(0.5, 0.25, 2), Vec3(0, 0, -1)}, Ray{Vec3(0.5, 0.25, -2), Vec3(0, 0, 1)},
           makeRay(Vec3(-1, -1, 1), Vec3(1.3, 1.6, -1))}) {
       ASSERT_TRUE(accel->closestHit(r, Interval{}, nullptr, h));
-      EXPECT_EQ(h.primitive, (PrimitiveRef{PrimitiveKind::Polygon, 0})) << accelKindName(kind);
+      EXPECT_EQ(h.primitive, (PrimitiveRef{kindOf<Polygon>, 0})) << accelKindName(kind);
     }
-    const PrimitiveRef first{PrimitiveKind::Polygon, 0};
+    const PrimitiveRef first{kindOf<Polygon>, 0};
     ASSERT_TRUE(accel->closestHit(Ray{Vec3(0.5, 0.25, 2), Vec3(0, 0, -1)}, Interval{}, &first, h));
-    EXPECT_EQ(h.primitive, (PrimitiveRef{PrimitiveKind::Polygon, 1}));
+    EXPECT_EQ(h.primitive, (PrimitiveRef{kindOf<Polygon>, 1}));
     ASSERT_TRUE(accel->closestHit(Ray{Vec3(5, 5, 9), Vec3(0, 0, -1)}, Interval{}, nullptr, h));
-    EXPECT_EQ(h.primitive, (PrimitiveRef{PrimitiveKind::Sphere, 0}));
+    EXPECT_EQ(h.primitive, (PrimitiveRef{kindOf<Sphere>, 0}));
     EXPECT_DOUBLE_EQ(h.t, 8.0);
   }
 }

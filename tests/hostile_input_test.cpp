@@ -173,7 +173,7 @@ TEST(Hostile, GroupsNestedToTheLimitBuildRenderAndWriteBack) {
   EXPECT_LT(text.size(), std::size_t(levels) * 2 * (32 + 6) + 1000);
   const Scene back = parseScene(text, "back.sc");
   EXPECT_EQ(back.groups.size(), scene.groups.size());
-  EXPECT_EQ(back.spheres.size(), 1u);
+  EXPECT_EQ(back.shapes<Sphere>().size(), 1u);
 }
 
 // One more level is refused with one located error (each open group costs

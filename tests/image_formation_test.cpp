@@ -1,8 +1,8 @@
-// Image formation (docs/image-formation.md) on synthetic buffers and a one-polygon scene whose radiance is known
-// exactly: the supersampling decision, sub-sample placement, avgmax, exposure.
+// Image formation (docs/image-formation.md) on synthetic buffers and a one-polygon scene whose
+// radiance is known exactly: the supersampling decision, sub-sample placement, avgmax, exposure.
 #include "core/render/exposure.h"
 #include "core/render/image_formation.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 
 #include <gtest/gtest.h>
 
@@ -118,8 +118,8 @@ struct HalfPlaneScene {
     Polygon p = makePolygon(quad);
     p.firstVertex = 0;
     scene.polygonVertices = quad;
-    scene.polygons.push_back(p);
-    scene.groups[0].primitives.push_back({PrimitiveKind::Polygon, 0});
+    scene.shapes<Polygon>().push_back(p);
+    scene.groups[0].primitives.push_back({kindOf<Polygon>, 0});
     accel = makeAccel(scene, AccelKind::None);
   }
   Scene scene;

@@ -72,7 +72,7 @@ TEST(Nff, LightsDeliverTheirIntensityAtTheViewedPoint) {
 TEST(Nff, FillBecomesTheMaterial) {
   const Scene s = parseNff(kScene, "t.nff");
   ASSERT_EQ(s.materials.size(), 2u);
-  const Material& m = s.material({PrimitiveKind::Sphere, 0});
+  const Material& m = s.material({kindOf<Sphere>, 0});
   EXPECT_EQ(m.color, Color(1, 0.5, 0.25));
   EXPECT_EQ(m.kdr, 0.6);
   EXPECT_EQ(m.ksr, 0.3);
@@ -80,20 +80,20 @@ TEST(Nff, FillBecomesTheMaterial) {
   EXPECT_EQ(m.kst, 0.1);
   EXPECT_EQ(m.ir, 1.5);
   // ior 0 on an opaque material (as SPD writes it) means 1.
-  const Material& grey = s.material({PrimitiveKind::Polygon, 0});
+  const Material& grey = s.material({kindOf<Polygon>, 0});
   EXPECT_EQ(grey.ir, 1.0);
   EXPECT_EQ(grey.kst, 0.0);
 }
 
 TEST(Nff, Primitives) {
   const Scene s = parseNff(kScene, "t.nff");
-  ASSERT_EQ(s.spheres.size(), 1u);
-  expectCloseTo(s.spheres[0].center, {0, 0, 0});
-  EXPECT_EQ(s.spheres[0].radius, 1.0);
-  EXPECT_EQ(s.spheres[0].origin.line, 13u);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 1u);
+  expectCloseTo(s.shapes<Sphere>()[0].center, {0, 0, 0});
+  EXPECT_EQ(s.shapes<Sphere>()[0].radius, 1.0);
+  EXPECT_EQ(s.shapes<Sphere>()[0].origin.line, 13u);
 
-  ASSERT_EQ(s.cones.size(), 1u);
-  const Cone& c = s.cones[0];
+  ASSERT_EQ(s.shapes<Cone>().size(), 1u);
+  const Cone& c = s.shapes<Cone>()[0];
   EXPECT_TRUE(isCircular(c));
   expectCloseTo(c.objectToWorldOffset, {0, -2, 0});
   expectCloseTo(c.objectToWorldOffset + c.objectToWorld[2], {0, 2, 0});
@@ -101,8 +101,8 @@ TEST(Nff, Primitives) {
   EXPECT_NEAR(c.apexRadius * glm::length(c.objectToWorld[0]), 0.5, 1e-15);
   EXPECT_EQ(c.origin.line, 14u);
 
-  ASSERT_EQ(s.polygons.size(), 1u);
-  const Polygon& p = s.polygons[0];
+  ASSERT_EQ(s.shapes<Polygon>().size(), 1u);
+  const Polygon& p = s.shapes<Polygon>()[0];
   ASSERT_EQ(p.vertexCount, 3u);
   expectCloseTo(s.polygonVertices[p.firstVertex + 2], {0, 1, -1});
   expectCloseTo(p.normal, {0, 0, 1}); // counterclockwise seen from +z
@@ -110,15 +110,15 @@ TEST(Nff, Primitives) {
 
   // The convex patch of 4 becomes a fan of 2 smooth triangles; its normals
   // are normalised ((0, 0, 2) -> (0, 0, 1)).
-  ASSERT_EQ(s.triangles.size(), 2u);
-  for (const Triangle& t : s.triangles) {
+  ASSERT_EQ(s.shapes<Triangle>().size(), 2u);
+  for (const Triangle& t : s.shapes<Triangle>()) {
     EXPECT_TRUE(t.smooth());
     EXPECT_EQ(t.origin.line, 20u);
     expectCloseTo(geometricNormal(t, s.meshVertices.data()), {0, 0, 1});
   }
-  expectCloseTo(s.meshVertices[s.triangles[1].vertex[2]], {-2, 2, -2});
-  expectCloseTo(s.meshNormals[s.triangles[0].normal[1]], {0, 0, 1});
-  expectCloseTo(s.meshNormals[s.triangles[1].normal[2]], glm::normalize(Vec3(1, 0, 1)));
+  expectCloseTo(s.meshVertices[s.shapes<Triangle>()[1].vertex[2]], {-2, 2, -2});
+  expectCloseTo(s.meshNormals[s.shapes<Triangle>()[0].normal[1]], {0, 0, 1});
+  expectCloseTo(s.meshNormals[s.shapes<Triangle>()[1].normal[2]], glm::normalize(Vec3(1, 0, 1)));
   EXPECT_EQ(s.primitiveCount(), 5u);
 }
 
@@ -145,9 +145,9 @@ TEST(Nff, CommentsOptionalLightColourAndInsideOutCones) {
                            "c 0 0 0 -1  0 1 0 -0.5  # seen from inside: both radii negative\n",
                            "t.nff");
   expectCloseTo(s.lights[0].intensity, Color(100.0));
-  ASSERT_EQ(s.cones.size(), 1u);
-  EXPECT_NEAR(s.cones[0].baseRadius, 1.0, 1e-15);
-  EXPECT_NEAR(s.cones[0].apexRadius, 0.5, 1e-15);
+  ASSERT_EQ(s.shapes<Cone>().size(), 1u);
+  EXPECT_NEAR(s.shapes<Cone>()[0].baseRadius, 1.0, 1e-15);
+  EXPECT_NEAR(s.shapes<Cone>()[0].apexRadius, 0.5, 1e-15);
 }
 
 TEST(Nff, ConcavePatchIsSplitIntoEars) {
@@ -156,9 +156,9 @@ TEST(Nff, ConcavePatchIsSplitIntoEars) {
                            "pp 6  0 0 0 0 0 1  2 0 0 0 0 1  2 1 0 0 0 1  1 1 0 0 0 1"
                            "  1 2 0 0 0 1  0 2 0 0 0 1\n",
                            "t.nff");
-  ASSERT_EQ(s.triangles.size(), 4u);
+  ASSERT_EQ(s.shapes<Triangle>().size(), 4u);
   double area = 0.0;
-  for (const Triangle& t : s.triangles) {
+  for (const Triangle& t : s.shapes<Triangle>()) {
     const Vec3* v = s.meshVertices.data();
     const Vec3 n = glm::cross(v[t.vertex[1]] - v[t.vertex[0]], v[t.vertex[2]] - v[t.vertex[0]]);
     EXPECT_GT(n.z, 0.0);
@@ -185,7 +185,7 @@ TEST(Nff, PatchesThatAreNotSimplePolygonsAreReported) {
   const Scene s = parseNff("v from 0 0 5 at 0 0 0 up 0 1 0 angle 45 resolution 8 8\n"
                            "pp 4 0 0 0 0 0 1  1 1 0 0 0 1  1 0 0 0 0 1  0 1 0 0 0 1\n",
                            "t.nff", &warnings);
-  EXPECT_EQ(s.triangles.size(), 2u);
+  EXPECT_EQ(s.shapes<Triangle>().size(), 2u);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 2);
   EXPECT_EQ(warnings[0].message, "pp: 1 patch is not a simple polygon (edges cross or touch, or a "

@@ -50,7 +50,7 @@ protected:
 
 // Every index a triangle holds is one the renderer follows without checking.
 void expectIndicesInBounds(const Scene& s) {
-  for (const Triangle& t : s.triangles) {
+  for (const Triangle& t : s.shapes<Triangle>()) {
     for (std::size_t c = 0; c < 3; ++c) {
       EXPECT_LT(t.vertex[c], s.meshVertices.size());
       if (t.smooth()) {
@@ -120,30 +120,30 @@ TEST_F(Obj, FacesBecomeTriangles) {
   write("t.mtl", kMtl);
   const Scene s = loadObj(write("t.obj", kObj));
   // 1 + 1 triangles, a quad in 2, a concave pentagon in 3, one more.
-  ASSERT_EQ(s.triangles.size(), 8u);
+  ASSERT_EQ(s.shapes<Triangle>().size(), 8u);
   expectIndicesInBounds(s);
   EXPECT_EQ(s.primitiveCount(), 8u);
   const Vec3* v = s.meshVertices.data();
   // f 1//1 2//1 3//1: smooth, its normal given.
-  EXPECT_TRUE(s.triangles[0].smooth());
-  expectCloseTo(s.meshNormals[s.triangles[0].normal[0]], {0, 0, 1});
-  EXPECT_EQ(s.triangles[0].origin.line, 11u);
+  EXPECT_TRUE(s.shapes<Triangle>()[0].smooth());
+  expectCloseTo(s.meshNormals[s.shapes<Triangle>()[0].normal[0]], {0, 0, 1});
+  EXPECT_EQ(s.shapes<Triangle>()[0].origin.line, 11u);
   // f -4 -2 -1 counts back from the 4 vertices so far: 1 3 4; flat.
-  EXPECT_FALSE(s.triangles[1].smooth());
-  expectCloseTo(v[s.triangles[1].vertex[0]], {0, 0, 0});
-  expectCloseTo(v[s.triangles[1].vertex[1]], {1, 1, 0});
-  expectCloseTo(v[s.triangles[1].vertex[2]], {0, 1, 0});
-  EXPECT_EQ(s.triangles[1].origin.line, 12u);
+  EXPECT_FALSE(s.shapes<Triangle>()[1].smooth());
+  expectCloseTo(v[s.shapes<Triangle>()[1].vertex[0]], {0, 0, 0});
+  expectCloseTo(v[s.shapes<Triangle>()[1].vertex[1]], {1, 1, 0});
+  expectCloseTo(v[s.shapes<Triangle>()[1].vertex[2]], {0, 1, 0});
+  EXPECT_EQ(s.shapes<Triangle>()[1].origin.line, 12u);
   // The quad: two smooth triangles, normals normalised.
   for (int i : {2, 3}) {
-    EXPECT_TRUE(s.triangles[i].smooth());
-    EXPECT_EQ(s.triangles[i].origin.line, 20u);
-    expectCloseTo(s.meshNormals[s.triangles[i].normal[2]], {0, 0, 1});
+    EXPECT_TRUE(s.shapes<Triangle>()[i].smooth());
+    EXPECT_EQ(s.shapes<Triangle>()[i].origin.line, 20u);
+    expectCloseTo(s.meshNormals[s.shapes<Triangle>()[i].normal[2]], {0, 0, 1});
   }
   // The concave pentagon: 3 triangles covering its area 2 - 0.5, all facing +z.
   double area = 0.0;
   for (int i : {4, 5, 6}) {
-    const Triangle& t = s.triangles[i];
+    const Triangle& t = s.shapes<Triangle>()[i];
     const Vec3 n = glm::cross(v[t.vertex[1]] - v[t.vertex[0]], v[t.vertex[2]] - v[t.vertex[0]]);
     EXPECT_GT(n.z, 0.0);
     area += 0.5 * glm::length(n);
@@ -158,23 +158,23 @@ TEST_F(Obj, FacesBecomeTriangles) {
 TEST_F(Obj, MtlMapsOntoPrismMaterials) {
   write("t.mtl", kMtl);
   const Scene s = loadObj(write("t.obj", kObj));
-  const Material& red = s.material({PrimitiveKind::Triangle, 0});
+  const Material& red = s.material({kindOf<Triangle>, 0});
   EXPECT_EQ(red.color, Color(0.8, 0.1, 0.1));
   EXPECT_EQ(red.kdr, 1.0);
   EXPECT_NEAR(red.ksr, 0.6, 1e-15); // mean of Ks
   EXPECT_EQ(red.kst, 0.0);
   EXPECT_EQ(red.e, 50.0);
   EXPECT_EQ(red.ir, 1.0);
-  const Material& glass = s.material({PrimitiveKind::Triangle, 2});
+  const Material& glass = s.material({kindOf<Triangle>, 2});
   EXPECT_EQ(glass.kdr, 0.25); // d
   EXPECT_EQ(glass.kst, 0.75); // 1 - d
   EXPECT_EQ(glass.ksr, 1.0);
   EXPECT_EQ(glass.e, 200.0);
   EXPECT_EQ(glass.ir, 1.5);
-  const Material& matte = s.material({PrimitiveKind::Triangle, 4});
+  const Material& matte = s.material({kindOf<Triangle>, 4});
   EXPECT_EQ(matte.ksr, 0.0); // illum 1: no highlight, no mirror
   // Tr 0.75 is d 0.25; no illum given: model 2 (but Ks is 0 here).
-  const Material& tr = s.material({PrimitiveKind::Triangle, 7});
+  const Material& tr = s.material({kindOf<Triangle>, 7});
   // (tinyobjloader's own number parser is not always correctly rounded.)
   EXPECT_NEAR(tr.kdr, 0.25, 1e-15);
   EXPECT_NEAR(tr.kst, 0.75, 1e-15);
@@ -201,7 +201,7 @@ TEST(ObjMaterial, Mapping) {
 
 TEST_F(Obj, DefaultCameraAndLights) {
   const Scene s = loadObj(write("t.obj", "v -1 -2 -3\nv 3 2 -3\nv 3 2 1\nf 1 2 3\n"));
-  ASSERT_EQ(s.triangles.size(), 1u);
+  ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
   // Looks at the box's centre along -z, from far enough to see it whole.
   expectCloseTo(s.camera.lookat, {1, 0, -1});
   const double radius = 0.5 * std::sqrt(16.0 + 16.0 + 16.0);
@@ -240,8 +240,8 @@ TEST_F(Obj, NormalsAgainstTheWindingWin) {
   // Wound clockwise seen from +z, but the normals say +z is outside.
   const Scene s = loadObj(write("t.obj", "v 0 0 0\nv 0 1 0\nv 1 0 0\nvn 0 0 1\n"
                                          "f 1//1 2//1 3//1\n"));
-  ASSERT_EQ(s.triangles.size(), 1u);
-  expectCloseTo(geometricNormal(s.triangles[0], s.meshVertices.data()), {0, 0, 1});
+  ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
+  expectCloseTo(geometricNormal(s.shapes<Triangle>()[0], s.meshVertices.data()), {0, 0, 1});
 }
 
 TEST_F(Obj, ZeroNormalsMakeAFlatFaceAndZeroAreaFacesAreDropped) {
@@ -249,8 +249,8 @@ TEST_F(Obj, ZeroNormalsMakeAFlatFaceAndZeroAreaFacesAreDropped) {
   const Scene s = loadObj(write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nvn 0 0 0\n"
                                          "f 1//1 2//1 3//1\nf 1 2 4\n"),
                           &warnings);
-  ASSERT_EQ(s.triangles.size(), 1u);
-  EXPECT_FALSE(s.triangles[0].smooth());
+  ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
+  EXPECT_FALSE(s.shapes<Triangle>()[0].smooth());
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].message, "1 zero-area triangle was dropped");
 }
@@ -264,7 +264,7 @@ TEST_F(Obj, FacesThatAreNotSimplePolygonsAreReported) {
                                          "f 1 2 3 4\nf 1 3 4 2\nf 1 5 2\n"),
                           &warnings);
   expectIndicesInBounds(s);
-  EXPECT_EQ(s.triangles.size(), 5u);
+  EXPECT_EQ(s.shapes<Triangle>().size(), 5u);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].message, "2 faces are not simple polygons (edges cross or touch, or a "
                                  "vertex repeats): their triangles are a best effort");
@@ -342,7 +342,7 @@ TEST_F(Obj, UnreadableFile) {
 
 // The triangle's vertices, in its order.
 std::array<Vec3, 3> cornersOf(const Scene& s, std::size_t triangle) {
-  const Triangle& t = s.triangles.at(triangle);
+  const Triangle& t = s.shapes<Triangle>().at(triangle);
   return {s.meshVertices.at(t.vertex[0]), s.meshVertices.at(t.vertex[1]),
           s.meshVertices.at(t.vertex[2])};
 }
@@ -363,9 +363,9 @@ TEST_F(Obj, FormFeedAndVerticalTabAreWhiteSpace) {
   const Scene s = loadObj(write("t.obj", "v 0 0 0\nv\v1 0 0\nv 0 1\f0\nvn\f0 0 1\n"
                                          "f\f1//1 2//1\v3//1\n"));
   expectIndicesInBounds(s);
-  ASSERT_EQ(s.triangles.size(), 1u);
+  ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
   ASSERT_EQ(s.meshNormals.size(), 1u);
-  EXPECT_TRUE(s.triangles[0].smooth());
+  EXPECT_TRUE(s.shapes<Triangle>()[0].smooth());
   expectCloseTo(s.meshNormals[0], {0, 0, 1});
   expectUnitTriangle(s, 0);
 }
@@ -374,9 +374,9 @@ TEST_F(Obj, CarriageReturnsEndLinesAsTinyobjloaderEndsThem) {
   // "\r", "\n" and "\r\n" each end a line (an empty one between "\r\r").
   const Scene s = loadObj(write("t.obj", "v 0 0 0\rv 1 0 0\r\nv 0 1 0\r\rf 1 2 3\r"));
   expectIndicesInBounds(s);
-  ASSERT_EQ(s.triangles.size(), 1u);
+  ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
   expectUnitTriangle(s, 0);
-  EXPECT_EQ(s.triangles[0].origin.line, 5u);
+  EXPECT_EQ(s.shapes<Triangle>()[0].origin.line, 5u);
   EXPECT_EQ(errorsOf("v 0 0 0\rv 1 x 0\r"),
             "DIR/t.obj:2:5: error: v: expected Y (a number) but found 'x'");
 }
@@ -390,7 +390,7 @@ TEST_F(Obj, AByteOrderMarkHidesNoVertex) {
     const Scene s = loadObj(write("t.obj", bom + kUnitTriangle + face));
     expectIndicesInBounds(s);
     ASSERT_EQ(s.meshVertices.size(), 3u);
-    ASSERT_EQ(s.triangles.size(), 1u);
+    ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
     expectUnitTriangle(s, 0);
   }
   // Columns count after the mark.
@@ -431,7 +431,7 @@ void expectPolygon(const Scene& s, std::size_t first, std::uint32_t vertex, int 
                    double z, std::uint32_t line) {
   double area = 0.0;
   for (std::size_t t = first; t < first + std::size_t(n) - 2; ++t) {
-    for (const std::uint32_t v : s.triangles[t].vertex) {
+    for (const std::uint32_t v : s.shapes<Triangle>()[t].vertex) {
       EXPECT_GE(v, vertex);
       EXPECT_LT(v, vertex + std::uint32_t(n));
     }
@@ -440,7 +440,7 @@ void expectPolygon(const Scene& s, std::size_t first, std::uint32_t vertex, int 
     EXPECT_GT(normal.z, 0.0);
     EXPECT_EQ(p[0].z, z);
     area += 0.5 * glm::length(normal);
-    EXPECT_EQ(s.triangles[t].origin.line, line);
+    EXPECT_EQ(s.shapes<Triangle>()[t].origin.line, line);
   }
   EXPECT_NEAR(area, polygonArea(n, concave), 1e-9);
 }
@@ -461,14 +461,14 @@ TEST_F(Obj, FacesOf256AndMoreVerticesKeepEveryVertex) {
     const Scene s = loadObj(write("t.obj", text), &warnings);
     expectIndicesInBounds(s);
     EXPECT_TRUE(warnings.empty());
-    ASSERT_EQ(s.triangles.size(), 2 * std::size_t(n - 2) + 2);
+    ASSERT_EQ(s.shapes<Triangle>().size(), 2 * std::size_t(n - 2) + 2);
     const auto u = std::uint32_t(n);
     expectPolygon(s, 0, 0, n, false, 0, u + 1);
     expectUnitTriangle(s, std::size_t(n - 2), 1);
-    EXPECT_EQ(s.triangles[std::size_t(n - 2)].origin.line, u + 5);
+    EXPECT_EQ(s.shapes<Triangle>()[std::size_t(n - 2)].origin.line, u + 5);
     expectPolygon(s, std::size_t(n - 1), u + 3, n, true, 2, 2 * u + 6);
     expectUnitTriangle(s, 2 * std::size_t(n - 2) + 1, 3);
-    EXPECT_EQ(s.triangles.back().origin.line, 2 * u + 10);
+    EXPECT_EQ(s.shapes<Triangle>().back().origin.line, 2 * u + 10);
   }
 }
 
@@ -481,7 +481,7 @@ TEST_F(Obj, AnObjWithoutFacesGetsAFiniteCameraAndLights) {
     SCOPED_TRACE(text);
     std::vector<Diagnostic> warnings;
     const Scene s = loadObj(write("t.obj", text), &warnings);
-    EXPECT_TRUE(s.triangles.empty());
+    EXPECT_TRUE(s.shapes<Triangle>().empty());
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0].line, 1);
     EXPECT_EQ(warnings[0].message, "the file has no faces: nothing to render");
@@ -497,7 +497,7 @@ TEST_F(Obj, AnObjWithoutFacesGetsAFiniteCameraAndLights) {
   // the warning about the dropped faces.
   std::vector<Diagnostic> warnings;
   const Scene s = loadObj(write("t.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"), &warnings);
-  EXPECT_TRUE(s.triangles.empty());
+  EXPECT_TRUE(s.shapes<Triangle>().empty());
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].message, "1 zero-area triangle was dropped");
   ASSERT_EQ(s.lights.size(), 2u);
@@ -545,8 +545,8 @@ TEST_F(Obj, CornersCommentsAndNulBytesMeanTheSameToBothReaders) {
     SCOPED_TRACE(face);
     const Scene s = loadObj(write("t.obj", kUnitTriangle + std::string("vn 0 0 1\n") + face));
     expectIndicesInBounds(s);
-    ASSERT_EQ(s.triangles.size(), 1u);
-    EXPECT_FALSE(s.triangles[0].smooth());
+    ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
+    EXPECT_FALSE(s.shapes<Triangle>()[0].smooth());
     expectUnitTriangle(s, 0);
   }
   // tinyobjloader reads a line as a C string: it stopped at a NUL byte where
@@ -556,7 +556,7 @@ TEST_F(Obj, CornersCommentsAndNulBytesMeanTheSameToBothReaders) {
   const Scene s =
       loadObj(write("t.obj", std::string("# a") + '\0' + "b\n" + kUnitTriangle + "f 1 2 3\n"));
   expectIndicesInBounds(s);
-  EXPECT_EQ(s.triangles.size(), 1u);
+  EXPECT_EQ(s.shapes<Triangle>().size(), 1u);
   // A `\` continuation is not supported, by either: an error, not a
   // different statement.
   EXPECT_EQ(errorsOf("v 0 0 \\\n0\n"),
@@ -569,8 +569,8 @@ TEST_F(Obj, LongLinesAreReadWhole) {
                            std::string(100000, ' ') + "f 1 2 3" + std::string(100000, '\t') + "\n";
   const Scene s = loadObj(write("t.obj", text));
   expectIndicesInBounds(s);
-  ASSERT_EQ(s.triangles.size(), 1u);
-  EXPECT_EQ(s.triangles[0].origin.line, 5u);
+  ASSERT_EQ(s.shapes<Triangle>().size(), 1u);
+  EXPECT_EQ(s.shapes<Triangle>()[0].origin.line, 5u);
 }
 
 TEST_F(Obj, NumbersAreOnesTinyobjloaderReadsAlike) {
@@ -607,8 +607,8 @@ TEST_F(Obj, NumbersAreOnesTinyobjloaderReadsAlike) {
 
 // The material the single face of `s` has.
 const Material& faceMaterial(const Scene& s) {
-  EXPECT_EQ(s.triangles.size(), 1u);
-  return s.material({PrimitiveKind::Triangle, 0});
+  EXPECT_EQ(s.shapes<Triangle>().size(), 1u);
+  return s.material({kindOf<Triangle>, 0});
 }
 
 TEST_F(Obj, MaterialsAreTheOnesTheScanChecked) {

@@ -2,7 +2,7 @@
 // transform, groups, includes) and every error with its exact position. Expected
 // values are worked out by hand in the comments.
 #include "core/io/scene_parser.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 
 #include "test_files.h"
 #include "tests/test_expect.h"
@@ -152,7 +152,7 @@ TEST(Parser, NumbersTooSmallForADoubleBecomeZero) {
             "t.sc:1:14: error: sphere: radius must be positive, found '1e-400'");
   EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 0x1p-2000"),
             "t.sc:1:14: error: sphere: radius must be positive, found '0x1p-2000'");
-  EXPECT_GT(parse("sphere 0 0 0 4.9e-324").spheres.at(0).radius, 0.0);
+  EXPECT_GT(parse("sphere 0 0 0 4.9e-324").shapes<Sphere>().at(0).radius, 0.0);
 }
 
 TEST(Parser, CommentsAnywhereAndCommandsAcrossLines) {
@@ -163,10 +163,10 @@ TEST(Parser, CommentsAnywhereAndCommandsAcrossLines) {
                         "fov 30#c\n"
                         "light#c\n"
                         "1 2 3 0.5 0.5 0.5 # the file ends inside a comment");
-  ASSERT_EQ(s.spheres.size(), 1u);
-  expectVec(s.spheres[0].center, {1, 2, 3});
-  EXPECT_EQ(s.spheres[0].radius, 4.0);
-  EXPECT_EQ(s.spheres[0].origin.line, 2u);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 1u);
+  expectVec(s.shapes<Sphere>()[0].center, {1, 2, 3});
+  EXPECT_EQ(s.shapes<Sphere>()[0].radius, 4.0);
+  EXPECT_EQ(s.shapes<Sphere>()[0].origin.line, 2u);
   EXPECT_EQ(s.camera.fov, 30.0);
   ASSERT_EQ(s.lights.size(), 1u);
   expectVec(s.lights[0].position, {1, 2, 3});
@@ -174,8 +174,8 @@ TEST(Parser, CommentsAnywhereAndCommandsAcrossLines) {
 
 TEST(Parser, WindowsLineEndings) {
   const Scene s = parse("sphere 0 0 0 1\r\nsphere 1 1 1 2\r\n");
-  ASSERT_EQ(s.spheres.size(), 2u);
-  EXPECT_EQ(s.spheres[1].origin.line, 2u);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 2u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].origin.line, 2u);
   EXPECT_EQ(sceneErrorsOf("fov 30\r\nfoo\r\n"), "t.sc:2:1: error: unknown keyword 'foo'");
 }
 
@@ -211,9 +211,9 @@ TEST(Parser, TransformsPostMultiply) {
   // After translate 5 0 0 then rotate 0 0 1 90 an object is rotated first:
   // (1,0,0) -> (0,1,0) -> (5,1,0).
   const Scene s = parse("translate 5 0 0\nrotate 0 0 1 90\nsphere 1 0 0 1\n");
-  ASSERT_EQ(s.spheres.size(), 1u);
-  expectVec(s.spheres[0].center, {5, 1, 0});
-  EXPECT_NEAR(s.spheres[0].radius, 1.0, kTol);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 1u);
+  expectVec(s.shapes<Sphere>()[0].center, {5, 1, 0});
+  EXPECT_NEAR(s.shapes<Sphere>()[0].radius, 1.0, kTol);
 }
 
 TEST(Parser, RotationIsRightHandedAboutAnyAxisLength) {
@@ -238,8 +238,8 @@ TEST(Parser, SurfaceSetsTheMaterialOfLaterPrimitives) {
   EXPECT_EQ(m.kst, 0.1);
   EXPECT_EQ(m.e, 30.0);
   EXPECT_EQ(m.ir, 1.5);
-  EXPECT_EQ(s.spheres[0].material, 0u);
-  EXPECT_EQ(s.spheres[1].material, 1u);
+  EXPECT_EQ(s.shapes<Sphere>()[0].material, 0u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].material, 1u);
 }
 
 TEST(Parser, IdenticalMaterialsAreStoredOnce) {
@@ -255,12 +255,12 @@ TEST(Parser, IdenticalMaterialsAreStoredOnce) {
                         "scale 1 2 1\n"
                         "sphere 0 0 0 1\n");
   ASSERT_EQ(s.materials.size(), 2u);
-  ASSERT_EQ(s.spheres.size(), 3u);
-  EXPECT_EQ(s.spheres[0].material, 0u);
-  EXPECT_EQ(s.spheres[1].material, 0u);
-  EXPECT_EQ(s.polygons.at(0).material, 1u);
-  EXPECT_EQ(s.spheres[2].material, 0u);
-  EXPECT_EQ(s.ellipsoids.at(0).material, 1u);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 3u);
+  EXPECT_EQ(s.shapes<Sphere>()[0].material, 0u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].material, 0u);
+  EXPECT_EQ(s.shapes<Polygon>().at(0).material, 1u);
+  EXPECT_EQ(s.shapes<Sphere>()[2].material, 0u);
+  EXPECT_EQ(s.shapes<Ellipsoid>().at(0).material, 1u);
 }
 
 TEST(Parser, SphereUnderASimilarityStaysASphere) {
@@ -268,27 +268,27 @@ TEST(Parser, SphereUnderASimilarityStaysASphere) {
   // A uniform mirror scale is a similarity too: centre (1,1,1) -> (-2,-2,-2), radius 2.
   const Scene s = parse("push scale 2 2 2 rotate 0 0 1 90 sphere 1 0 0 3 pop\n"
                         "push scale -2 -2 -2 sphere 1 1 1 1 pop\n");
-  ASSERT_EQ(s.spheres.size(), 2u);
-  EXPECT_TRUE(s.ellipsoids.empty());
-  expectVec(s.spheres[0].center, {0, 2, 0});
-  EXPECT_NEAR(s.spheres[0].radius, 6.0, kTol);
-  expectVec(s.spheres[1].center, {-2, -2, -2});
-  EXPECT_NEAR(s.spheres[1].radius, 2.0, kTol);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 2u);
+  EXPECT_TRUE(s.shapes<Ellipsoid>().empty());
+  expectVec(s.shapes<Sphere>()[0].center, {0, 2, 0});
+  EXPECT_NEAR(s.shapes<Sphere>()[0].radius, 6.0, kTol);
+  expectVec(s.shapes<Sphere>()[1].center, {-2, -2, -2});
+  EXPECT_NEAR(s.shapes<Sphere>()[1].radius, 2.0, kTol);
   EXPECT_EQ(s.groups[0].primitives.size(), 0u);
-  EXPECT_EQ(s.groups[1].primitives, (std::vector<PrimitiveRef>{{PrimitiveKind::Sphere, 0}}));
-  EXPECT_EQ(s.groups[2].primitives, (std::vector<PrimitiveRef>{{PrimitiveKind::Sphere, 1}}));
+  EXPECT_EQ(s.groups[1].primitives, (std::vector<PrimitiveRef>{{kindOf<Sphere>, 0}}));
+  EXPECT_EQ(s.groups[2].primitives, (std::vector<PrimitiveRef>{{kindOf<Sphere>, 1}}));
 }
 
 TEST(Parser, SphereUnderNonUniformScaleIsAnEllipsoid) {
   // scale 2 1 1 on the unit sphere at (1,0,0): centre (2,0,0), semi-axes 2, 1, 1.
   const Scene s = parse("scale 2 1 1\nsphere 1 0 0 1\n");
-  ASSERT_EQ(s.ellipsoids.size(), 1u);
-  EXPECT_TRUE(s.spheres.empty());
-  const Ellipsoid& e = s.ellipsoids[0];
+  ASSERT_EQ(s.shapes<Ellipsoid>().size(), 1u);
+  EXPECT_TRUE(s.shapes<Sphere>().empty());
+  const Ellipsoid& e = s.shapes<Ellipsoid>()[0];
   expectVec(e.bounds.lo, {0, -1, -1});
   expectVec(e.bounds.hi, {4, 1, 1});
   EXPECT_EQ(e.origin.line, 2u);
-  EXPECT_EQ(s.groups[0].primitives, (std::vector<PrimitiveRef>{{PrimitiveKind::Ellipsoid, 0}}));
+  EXPECT_EQ(s.groups[0].primitives, (std::vector<PrimitiveRef>{{kindOf<Ellipsoid>, 0}}));
   // At the tip (4,0,0) the normal is +x. At (2 + 2 cos 45, sin 45, 0) the gradient
   // of ((x-2)/2)^2 + y^2 is ((x-2)/4, y) = (sqrt2/4, sqrt2/2) ~ (1, 2, 0).
   expectVec(normalAt(e, {4, 0, 0}), {1, 0, 0});
@@ -300,8 +300,8 @@ TEST(Parser, EllipsoidRadiusAndRotationApplyInTheRightOrder) {
   // Radius 2, stretched 3x along x, then rotated 90 about z: the long axis (12 long)
   // lies along y, centred on the translated origin (1,1,1).
   const Scene s = parse("translate 1 1 1\nrotate 0 0 1 90\nscale 3 1 1\nsphere 0 0 0 2\n");
-  ASSERT_EQ(s.ellipsoids.size(), 1u);
-  const Ellipsoid& e = s.ellipsoids[0];
+  ASSERT_EQ(s.shapes<Ellipsoid>().size(), 1u);
+  const Ellipsoid& e = s.shapes<Ellipsoid>()[0];
   expectVec(e.bounds.lo, {-1, -5, -1});
   expectVec(e.bounds.hi, {3, 7, 3});
   expectVec(normalAt(e, {1, 7, 1}), {0, 1, 0});
@@ -316,14 +316,14 @@ TEST(Parser, PolygonKeepsCounterclockwiseOrderAndFacesItsFront) {
                         "  0 1 0\n"
                         "  1 1 0\n"
                         "  1 0 0\n");
-  ASSERT_EQ(s.polygons.size(), 2u);
-  const Polygon& a = s.polygons[0];
+  ASSERT_EQ(s.shapes<Polygon>().size(), 2u);
+  const Polygon& a = s.shapes<Polygon>()[0];
   EXPECT_EQ(a.firstVertex, 0u);
   EXPECT_EQ(a.vertexCount, 3u);
   expectVec(a.normal, {0, 0, 1}); // x then y: counterclockwise seen from +z
   EXPECT_NEAR(a.planeOffset, 0.0, kTol);
   EXPECT_EQ(a.origin.line, 1u);
-  const Polygon& b = s.polygons[1];
+  const Polygon& b = s.shapes<Polygon>()[1];
   EXPECT_EQ(b.firstVertex, 3u);
   EXPECT_EQ(b.vertexCount, 4u);
   expectVec(b.normal, {0, 0, -1});        // y then x: clockwise from +z
@@ -333,7 +333,7 @@ TEST(Parser, PolygonKeepsCounterclockwiseOrderAndFacesItsFront) {
   expectVec(s.polygonVertices[1], {1, 0, 0});
   expectVec(s.polygonVertices[3], {0, 0, 2});
   expectVec(s.polygonVertices[5], {1, 1, 2});
-  const Aabb box = s.bounds({PrimitiveKind::Polygon, 1});
+  const Aabb box = s.bounds({kindOf<Polygon>, 1});
   expectVec(box.lo, {0, 0, 2});
   expectVec(box.hi, {1, 1, 2});
 }
@@ -341,8 +341,8 @@ TEST(Parser, PolygonKeepsCounterclockwiseOrderAndFacesItsFront) {
 TEST(Parser, ConcavePolygon) {
   // An L shape, counterclockwise from +z.
   const Scene s = parse("polygon 6  0 0 0  2 0 0  2 1 0  1 1 0  1 2 0  0 2 0\n");
-  ASSERT_EQ(s.polygons.size(), 1u);
-  expectVec(s.polygons[0].normal, {0, 0, 1});
+  ASSERT_EQ(s.shapes<Polygon>().size(), 1u);
+  expectVec(s.shapes<Polygon>()[0].normal, {0, 0, 1});
 }
 
 TEST(Parser, MirrorTransformReversesPolygonVertices) {
@@ -350,8 +350,8 @@ TEST(Parser, MirrorTransformReversesPolygonVertices) {
   // seen from +z; stored reversed they run counterclockwise again, so the front
   // stays +z as the mirrored object's outside does.
   const Scene s = parse("scale -1 1 1\npolygon 3 0 0 0 1 0 0 0 1 0\n");
-  ASSERT_EQ(s.polygons.size(), 1u);
-  expectVec(s.polygons[0].normal, {0, 0, 1});
+  ASSERT_EQ(s.shapes<Polygon>().size(), 1u);
+  expectVec(s.shapes<Polygon>()[0].normal, {0, 0, 1});
   ASSERT_EQ(s.polygonVertices.size(), 3u);
   expectVec(s.polygonVertices[0], {0, 1, 0});
   expectVec(s.polygonVertices[1], {-1, 0, 0});
@@ -363,9 +363,9 @@ TEST(Parser, MirroredClosedBoxKeepsOutwardNormals) {
   // translation: its normal must still point away from the cube's centre (5,0,0).
   const Scene s = parse("translate 5 0 0 scale -1 1 1\n"
                         "polygon 4  -0.5 -0.5 0.5  0.5 -0.5 0.5  0.5 0.5 0.5  -0.5 0.5 0.5\n");
-  ASSERT_EQ(s.polygons.size(), 1u);
-  expectVec(s.polygons[0].normal, {0, 0, 1});
-  EXPECT_NEAR(s.polygons[0].planeOffset, 0.5, kTol);
+  ASSERT_EQ(s.shapes<Polygon>().size(), 1u);
+  expectVec(s.shapes<Polygon>()[0].normal, {0, 0, 1});
+  EXPECT_NEAR(s.shapes<Polygon>()[0].planeOffset, 0.5, kTol);
 }
 
 TEST(Parser, PushAndPopRestoreMaterialAndTransform) {
@@ -376,11 +376,11 @@ TEST(Parser, PushAndPopRestoreMaterialAndTransform) {
                         "  sphere 0 0 0 1\n"
                         "pop\n"
                         "sphere 0 0 0 1\n");
-  ASSERT_EQ(s.spheres.size(), 2u);
-  expectVec(s.spheres[0].center, {10, 0, 0});
-  expectVec(s.materials.at(s.spheres[0].material).color, {0, 1, 0});
-  expectVec(s.spheres[1].center, {0, 0, 0});
-  expectVec(s.materials.at(s.spheres[1].material).color, {1, 0, 0});
+  ASSERT_EQ(s.shapes<Sphere>().size(), 2u);
+  expectVec(s.shapes<Sphere>()[0].center, {10, 0, 0});
+  expectVec(s.materials.at(s.shapes<Sphere>()[0].material).color, {0, 1, 0});
+  expectVec(s.shapes<Sphere>()[1].center, {0, 0, 0});
+  expectVec(s.materials.at(s.shapes<Sphere>()[1].material).color, {1, 0, 0});
 }
 
 TEST(Parser, GroupsFollowPushAndPop) {
@@ -397,13 +397,13 @@ TEST(Parser, GroupsFollowPushAndPop) {
                         "sphere 0 0 0 1\n"); // group 0 again
   ASSERT_EQ(s.groups.size(), 5u);
   using R = std::vector<PrimitiveRef>;
-  constexpr auto S = PrimitiveKind::Sphere;
+  constexpr auto S = kindOf<Sphere>;
   EXPECT_EQ(s.groups[0].children, (std::vector<std::uint32_t>{1, 4}));
   EXPECT_EQ(s.groups[0].primitives, (R{{S, 0}, {S, 4}}));
   EXPECT_EQ(s.groups[1].children, (std::vector<std::uint32_t>{2, 3}));
   EXPECT_EQ(s.groups[1].primitives, (R{{S, 1}, {S, 3}}));
   EXPECT_EQ(s.groups[2].primitives, (R{{S, 2}}));
-  EXPECT_EQ(s.groups[3].primitives, (R{{PrimitiveKind::Polygon, 0}}));
+  EXPECT_EQ(s.groups[3].primitives, (R{{kindOf<Polygon>, 0}}));
   EXPECT_TRUE(s.groups[4].primitives.empty());
   EXPECT_EQ(s.groups[1].origin.line, 2u);
   EXPECT_EQ(s.groups[2].origin.line, 4u);
@@ -423,18 +423,18 @@ TEST_F(ParserFiles, IncludeLetsMaterialAndTransformFlowInAndOut) {
                        "surface 0 1 0 1 0 0 1 1\n"
                        "translate 0 1 0\n");
   const Scene s = loadScene(dir_ / "main.sc");
-  ASSERT_EQ(s.spheres.size(), 2u);
-  expectVec(s.spheres[0].center, {1, 0, 0});
-  expectVec(s.materials.at(s.spheres[0].material).color, {1, 0, 0});
-  expectVec(s.spheres[1].center, {1, 1, 0});
-  expectVec(s.materials.at(s.spheres[1].material).color, {0, 1, 0});
+  ASSERT_EQ(s.shapes<Sphere>().size(), 2u);
+  expectVec(s.shapes<Sphere>()[0].center, {1, 0, 0});
+  expectVec(s.materials.at(s.shapes<Sphere>()[0].material).color, {1, 0, 0});
+  expectVec(s.shapes<Sphere>()[1].center, {1, 1, 0});
+  expectVec(s.materials.at(s.shapes<Sphere>()[1].material).color, {0, 1, 0});
   ASSERT_EQ(s.files.size(), 2u);
   EXPECT_EQ(s.files[0], name("main.sc"));
   EXPECT_EQ(s.files[1], name("sub/part.sc"));
-  EXPECT_EQ(s.spheres[0].origin.file, 1u);
-  EXPECT_EQ(s.spheres[0].origin.line, 1u);
-  EXPECT_EQ(s.spheres[1].origin.file, 0u);
-  EXPECT_EQ(s.spheres[1].origin.line, 4u);
+  EXPECT_EQ(s.shapes<Sphere>()[0].origin.file, 1u);
+  EXPECT_EQ(s.shapes<Sphere>()[0].origin.line, 1u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].origin.file, 0u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].origin.line, 4u);
   // include opens no group.
   ASSERT_EQ(s.groups.size(), 1u);
   EXPECT_EQ(s.groups[0].primitives.size(), 2u);
@@ -446,11 +446,11 @@ TEST_F(ParserFiles, IncludePathsAreRelativeToTheIncludingFile) {
   write("a/c.sc", "sphere 0 0 0 1\n");
   write("d.sc", "sphere 1 0 0 1\n");
   const Scene s = loadScene(dir_ / "main.sc");
-  ASSERT_EQ(s.spheres.size(), 2u);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 2u);
   EXPECT_EQ(s.files, (std::vector<std::string>{name("main.sc"), name("a/b.sc"), name("a/c.sc"),
                                                name("d.sc")}));
-  EXPECT_EQ(s.spheres[0].origin.file, 2u);
-  EXPECT_EQ(s.spheres[1].origin.file, 3u);
+  EXPECT_EQ(s.shapes<Sphere>()[0].origin.file, 2u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].origin.file, 3u);
 }
 
 TEST_F(ParserFiles, TheSamePathWrittenInTwoFoldersNamesTwoFiles) {
@@ -462,14 +462,14 @@ TEST_F(ParserFiles, TheSamePathWrittenInTwoFoldersNamesTwoFiles) {
   write("a/leaf.sc", "sphere 0 0 0 1\n");
   write("b/leaf.sc", "sphere 5 0 0 2\n");
   const Scene s = loadScene(dir_ / "main.sc");
-  ASSERT_EQ(s.spheres.size(), 3u);
-  EXPECT_EQ(s.spheres[0].radius, 1.0);
-  EXPECT_EQ(s.spheres[1].radius, 2.0);
-  EXPECT_EQ(s.spheres[2].radius, 1.0);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 3u);
+  EXPECT_EQ(s.shapes<Sphere>()[0].radius, 1.0);
+  EXPECT_EQ(s.shapes<Sphere>()[1].radius, 2.0);
+  EXPECT_EQ(s.shapes<Sphere>()[2].radius, 1.0);
   EXPECT_EQ(s.files,
             (std::vector<std::string>{name("main.sc"), name("a/part.sc"), name("a/leaf.sc"),
                                       name("b/part.sc"), name("b/leaf.sc")}));
-  EXPECT_EQ(s.spheres[2].origin.file, 2u);
+  EXPECT_EQ(s.shapes<Sphere>()[2].origin.file, 2u);
 }
 
 TEST_F(ParserFiles, QuotedIncludePathMayHoldSpacesAndHashes) {
@@ -478,10 +478,10 @@ TEST_F(ParserFiles, QuotedIncludePathMayHoldSpacesAndHashes) {
                    "   \"my part#1.sc\"\n");
   write("my part#1.sc", "push translate 0 0 1 sphere 0 0 0 1 pop\n");
   const Scene s = loadScene(dir_ / "main.sc");
-  ASSERT_EQ(s.spheres.size(), 2u);
+  ASSERT_EQ(s.shapes<Sphere>().size(), 2u);
   // One file included twice: stored once, and each inclusion makes its own group.
   EXPECT_EQ(s.files.size(), 2u);
-  EXPECT_EQ(s.spheres[1].origin.file, 1u);
+  EXPECT_EQ(s.shapes<Sphere>()[1].origin.file, 1u);
   ASSERT_EQ(s.groups.size(), 3u);
   EXPECT_EQ(s.groups[0].children, (std::vector<std::uint32_t>{1, 2}));
   EXPECT_EQ(s.groups[1].origin.file, 1u);
@@ -539,7 +539,7 @@ TEST_F(ParserFiles, IncludeNestingIsLimitedTo64Files) {
   write("f64.sc", "sphere 0 0 0 1\n");
   EXPECT_EQ(loadErrors("f0.sc"),
             name("f63.sc") + ":1:9: error: include: files nested more than 64 deep");
-  EXPECT_EQ(loadScene(dir_ / "f1.sc").spheres.size(), 1u);
+  EXPECT_EQ(loadScene(dir_ / "f1.sc").shapes<Sphere>().size(), 1u);
 }
 
 TEST_F(ParserFiles, PushAndPopBalanceWithinEachFile) {
@@ -758,9 +758,9 @@ TEST(ParserErrors, TransformsStretchingTooUnevenly) {
   EXPECT_EQ(sceneErrorsOf("scale 1e6 1 1e-5\ncone 0 0 0 1  1 1 1 0.5"),
             "t.sc:2:1: error: cone" + uneven);
   // Just inside: axes 2, 1 and 1e-9 (|m| |m^-1| = 2.2e9).
-  EXPECT_EQ(parse("rotate 1 2 3 40 scale 2 1 1e-9 sphere 0 0 0 1").ellipsoids.size(), 1u);
+  EXPECT_EQ(parse("rotate 1 2 3 40 scale 2 1 1e-9 sphere 0 0 0 1").shapes<Ellipsoid>().size(), 1u);
   // A circular cone of any proportions under a uniform scale.
-  EXPECT_EQ(parse("scale 1e-5 1e-5 1e-5 cone 0 0 0 1e20  0 0 1 1e20").cones.size(), 1u);
+  EXPECT_EQ(parse("scale 1e-5 1e-5 1e-5 cone 0 0 0 1e20  0 0 1 1e20").shapes<Cone>().size(), 1u);
 }
 
 // Squares of distances must not overflow (a sphere of radius 1e155 was never
@@ -771,7 +771,7 @@ TEST(ParserErrors, WorldCoordinatesBeyondTheSupportedRange) {
                               "current transform) must be within +-1e30";
   EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1e155"), "t.sc:1:1: error: sphere" + outside);
   EXPECT_EQ(sceneErrorsOf("sphere 1e30 0 0 1e15"), "t.sc:1:1: error: sphere" + outside);
-  EXPECT_EQ(parse("sphere 0 0 0 1e30").spheres.at(0).radius, 1e30); // the limit itself
+  EXPECT_EQ(parse("sphere 0 0 0 1e30").shapes<Sphere>().at(0).radius, 1e30); // the limit itself
   EXPECT_EQ(sceneErrorsOf("scale 1e20 1e20 1e20\nscale 1e20 1 1 sphere 0 0 0 1"),
             "t.sc:2:16: error: sphere" + outside);
   EXPECT_EQ(sceneErrorsOf("scale 1e29 1 1 sphere 0 0 0 20"), "t.sc:1:16: error: sphere" + outside);

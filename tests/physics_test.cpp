@@ -1,8 +1,7 @@
-// The tracer against radiance computed by hand from the model of docs/rendering-model.md: the cosine and
-// inverse-square laws, the Phong half-vector highlight, shadows, mirrors,
-// Snell's law, total internal reflection, depth limits and ray statistics.
-// Scenes are built in code; every expected value is closed-form math written
-// out in the test, never output of the renderer.
+// The tracer against radiance computed by hand from the model of docs/rendering-model.md: the
+// cosine and inverse-square laws, the Phong half-vector highlight, shadows, mirrors, Snell's law,
+// total internal reflection, depth limits and ray statistics. Scenes are built in code; every
+// expected value is closed-form math written out in the test, never output of the renderer.
 #include "core/accel/accel.h"
 #include "core/render/tracer.h"
 #include "core/scene/camera.h"
@@ -655,7 +654,7 @@ TEST(Degenerate, GrazingAndTangentRaysStayFinite) {
   // Exactly tangent to the sphere at (0, 1, 2): N.D = 0 counts as entering.
   const Traced tangent = run(scene, Ray{Vec3(-5, 1, 2), Vec3(1, 0, 0)}, 10);
   ASSERT_TRUE(tangent.tree.hit);
-  EXPECT_EQ(tangent.tree.where.primitive.kind, PrimitiveKind::Sphere);
+  EXPECT_EQ(tangent.tree.where.primitive.kind, kindOf<Sphere>);
   EXPECT_FALSE(tangent.tree.leaving);
   EXPECT_GE(tangent.counts.transmitted, 1u);
 

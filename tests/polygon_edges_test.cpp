@@ -5,7 +5,7 @@
 // full test took O(n) per ray, against the disc it approximates.
 #include "core/accel/accel.h"
 #include "core/scene/scene.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ int expectSameAsEveryEdge(const std::vector<glm::dvec2>& points, int orientation
   scene.materials.push_back(Material{});
   const std::vector<Vec3> vertices = placed(points, orientation);
   const PrimitiveRef ref = addPolygon(scene, vertices, 0, Origin{}, 0);
-  const Polygon& p = scene.polygons[ref.index];
+  const Polygon& p = scene.shapes<Polygon>()[ref.index];
   EXPECT_NE(p.edgeIndex, Polygon::kNoEdgeIndex);
   const PolygonEdgeIndex& index = scene.polygonEdgeIndices.at(p.edgeIndex);
   const Vec3 n = normalOf(orientation);

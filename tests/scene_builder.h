@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/scene/scene.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 
 #include <cstdint>
 #include <initializer_list>
@@ -40,8 +40,8 @@ inline PrimitiveRef addSphere(Scene& scene, const Vec3& center, double radius,
   s.center = center;
   s.radius = radius;
   s.material = material;
-  scene.spheres.push_back(s);
-  const PrimitiveRef ref{PrimitiveKind::Sphere, std::uint32_t(scene.spheres.size() - 1)};
+  scene.shapes<Sphere>().push_back(s);
+  const PrimitiveRef ref{kindOf<Sphere>, std::uint32_t(scene.shapes<Sphere>().size() - 1)};
   scene.groups[group].primitives.push_back(ref);
   return ref;
 }
@@ -51,8 +51,8 @@ inline PrimitiveRef addEllipsoid(Scene& scene, const Mat3& linear, const Vec3& o
                                  std::uint32_t material, std::uint32_t group = 0) {
   Ellipsoid e = makeEllipsoid(linear, offset);
   e.material = material;
-  scene.ellipsoids.push_back(e);
-  const PrimitiveRef ref{PrimitiveKind::Ellipsoid, std::uint32_t(scene.ellipsoids.size() - 1)};
+  scene.shapes<Ellipsoid>().push_back(e);
+  const PrimitiveRef ref{kindOf<Ellipsoid>, std::uint32_t(scene.shapes<Ellipsoid>().size() - 1)};
   scene.groups[group].primitives.push_back(ref);
   return ref;
 }

@@ -187,18 +187,19 @@ TEST(SmoothTriangle, ScLanguage) {
                              "scale -1 1 1\n"
                              "triangle 0 0 0  1 0 0  0 1 0\n"
                              "pop\n");
-  ASSERT_EQ(s.triangles.size(), 3u);
-  EXPECT_FALSE(s.triangles[0].smooth());
-  EXPECT_TRUE(s.triangles[1].smooth());
+  ASSERT_EQ(s.shapes<Triangle>().size(), 3u);
+  EXPECT_FALSE(s.shapes<Triangle>()[0].smooth());
+  EXPECT_TRUE(s.shapes<Triangle>()[1].smooth());
   // Normals move by the inverse transpose: (1, 1, 0) under scale 2 1 1 is
   // (1/2, 1, 0), normalised.
-  EXPECT_NEAR(
-      glm::length(s.meshNormals[s.triangles[1].normal[0]] - glm::normalize(Vec3(0.5, 1, 0))), 0.0,
-      1e-15);
-  EXPECT_EQ(s.meshVertices[s.triangles[1].vertex[1]], Vec3(2, 0, 0));
-  // Mirrored: the winding is reversed so the outward normal stays +z.
-  EXPECT_NEAR(glm::length(geometricNormal(s.triangles[2], s.meshVertices.data()) - Vec3(0, 0, 1)),
+  EXPECT_NEAR(glm::length(s.meshNormals[s.shapes<Triangle>()[1].normal[0]] -
+                          glm::normalize(Vec3(0.5, 1, 0))),
               0.0, 1e-15);
+  EXPECT_EQ(s.meshVertices[s.shapes<Triangle>()[1].vertex[1]], Vec3(2, 0, 0));
+  // Mirrored: the winding is reversed so the outward normal stays +z.
+  EXPECT_NEAR(
+      glm::length(geometricNormal(s.shapes<Triangle>()[2], s.meshVertices.data()) - Vec3(0, 0, 1)),
+      0.0, 1e-15);
 
   EXPECT_EQ(test::sceneErrorsOf("triangle 0 0 0  1 1 1  2 2 2"),
             "t.sc:1:1: error: triangle: degenerate triangle (zero area)");
@@ -231,7 +232,7 @@ TEST(SmoothTriangle, TessellatedSphereShadesLikeAnalyticSphere) {
   mesh.ambient = analytic.ambient;
   mesh.background = analytic.background;
   mesh.materials = analytic.materials;
-  for (Triangle& t : mesh.triangles)
+  for (Triangle& t : mesh.shapes<Triangle>())
     t.material = 0;
 
   const auto accelA = makeAccel(analytic, AccelKind::Bvh);

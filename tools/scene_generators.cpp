@@ -1,6 +1,6 @@
 #include "tools/scene_generators.h"
 
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 
 #include <algorithm>
 #include <array>
@@ -105,9 +105,9 @@ Scene makeSphereflake(std::size_t spheres) {
     // A sphere whose children will be made groups itself with them.
     const bool hasChildren = made + queue.size() + 1 < spheres;
     const std::uint32_t group = hasChildren ? addGroup(scene, s.parentGroup) : s.parentGroup;
-    scene.spheres.push_back({s.center, s.radius, flake, {}});
+    scene.shapes<Sphere>().push_back({s.center, s.radius, flake, {}});
     scene.groups[group].primitives.push_back(
-        {PrimitiveKind::Sphere, std::uint32_t(scene.spheres.size() - 1)});
+        {kindOf<Sphere>, std::uint32_t(scene.shapes<Sphere>().size() - 1)});
     ++made;
     if (!hasChildren) continue;
     Vec3 e1, e2;
@@ -179,7 +179,7 @@ Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::
       return a.morton < b.morton;
     });
 
-  scene.polygons.reserve(triangles);
+  scene.shapes<Polygon>().reserve(triangles);
   scene.polygonVertices.reserve(3 * triangles);
   scene.groups[0].primitives.reserve(triangles);
   std::vector<Vec3> v(3);

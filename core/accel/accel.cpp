@@ -2,7 +2,6 @@
 
 #include "core/accel/bvh.h"
 #include "core/accel/group_bvh.h"
-#include "core/shapes/geometry.h"
 
 #include <stdexcept>
 
@@ -34,38 +33,13 @@ std::uint64_t Accel::closestHits(std::span<const Ray> rays, std::span<Hit> hits)
 
 bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, Interval range,
                         double& t) {
-  switch (ref.kind) {
-  case PrimitiveKind::Sphere: return intersect(scene.spheres[ref.index], ray, range, t);
-  case PrimitiveKind::Ellipsoid: return intersect(scene.ellipsoids[ref.index], ray, range, t);
-  case PrimitiveKind::Polygon: {
-    const Polygon& p = scene.polygons[ref.index];
-    const PolygonEdgeIndex* edges =
-        p.edgeIndex == Polygon::kNoEdgeIndex ? nullptr : &scene.polygonEdgeIndices[p.edgeIndex];
-    return intersect(p, scene.polygonVertices.data(), edges, ray, range, t);
-  }
-  case PrimitiveKind::Cone: return intersect(scene.cones[ref.index], ray, range, t);
-  case PrimitiveKind::Triangle:
-    return intersect(scene.triangles[ref.index], scene.meshVertices.data(), ray, range, t);
-  }
-  return false;
+  return scene.visit(
+      ref, [&](const auto& shape) { return intersect(shape, scene.arrays(), ray, range, t); });
 }
 
 Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point) {
-  switch (ref.kind) {
-  case PrimitiveKind::Sphere: return normalAt(scene.spheres[ref.index], point);
-  case PrimitiveKind::Ellipsoid: return normalAt(scene.ellipsoids[ref.index], point);
-  case PrimitiveKind::Polygon: return scene.polygons[ref.index].normal;
-  case PrimitiveKind::Cone: return normalAt(scene.cones[ref.index], point);
-  case PrimitiveKind::Triangle:
-    return geometricNormal(scene.triangles[ref.index], scene.meshVertices.data());
-  }
-  return Vec3(0.0, 0.0, 1.0);
-}
-
-Vec3 interpolatedNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point) {
-  if (ref.kind != PrimitiveKind::Triangle) return outwardNormal(scene, ref, point);
-  return interpolatedNormal(scene.triangles[ref.index], scene.meshVertices.data(),
-                            scene.meshNormals.data(), point);
+  return scene.visit(
+      ref, [&](const auto& shape) { return outwardNormal(shape, scene.arrays(), point); });
 }
 
 namespace {

@@ -81,8 +81,4 @@ bool intersectPrimitive(const Scene& scene, PrimitiveRef ref, const Ray& ray, In
 // which decides entering or leaving (docs/rendering-model.md) and where rays start.
 Vec3 outwardNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point);
 
-// The normal the surface is shaded with, also outward: for a smooth triangle
-// the interpolated vertex normal, for every other primitive outwardNormal.
-Vec3 interpolatedNormal(const Scene& scene, PrimitiveRef ref, const Vec3& point);
-
 } // namespace prism

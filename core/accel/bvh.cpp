@@ -80,6 +80,8 @@ inline Lanes load(const double* p) {
 
 constexpr std::uint32_t kKindShift = 29; // 3 bits of PrimitiveKind, 29 of index
 constexpr std::uint32_t kIndexMask = (1u << kKindShift) - 1;
+static_assert(kShapeKindCount <= (1u << (32 - kKindShift)),
+              "more shape kinds than the packed reference's kind bits hold");
 
 inline PrimitiveRef decodeRef(std::uint32_t code) {
   return {PrimitiveKind(code >> kKindShift), code & kIndexMask};

@@ -32,9 +32,9 @@ bool addMeshTriangle(Scene& scene, std::array<std::uint32_t, 3> vertex,
   }
   t.material = material;
   t.origin = origin;
-  scene.triangles.push_back(t);
+  scene.shapes<Triangle>().push_back(t);
   scene.groups[group].primitives.push_back(
-      {PrimitiveKind::Triangle, std::uint32_t(scene.triangles.size() - 1)});
+      {kindOf<Triangle>, std::uint32_t(scene.shapes<Triangle>().size() - 1)});
   return true;
 }
 

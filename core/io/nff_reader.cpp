@@ -15,7 +15,7 @@
 #include "core/io/import_common.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 #include "core/shapes/triangulate.h"
 
 #include <array>
@@ -383,9 +383,9 @@ void NffReader::cone(const Token& keyword) {
   }
   c.material = material();
   c.origin = origin(keyword);
-  scene_.cones.push_back(c);
+  scene_.shapes<Cone>().push_back(c);
   scene_.groups[0].primitives.push_back(
-      {PrimitiveKind::Cone, std::uint32_t(scene_.cones.size() - 1)});
+      {kindOf<Cone>, std::uint32_t(scene_.shapes<Cone>().size() - 1)});
 }
 
 void NffReader::sphere(const Token& keyword) {
@@ -401,9 +401,9 @@ void NffReader::sphere(const Token& keyword) {
     report(keyword, outsideModelRangeMessage("s"));
     return;
   }
-  scene_.spheres.push_back(sphere);
+  scene_.shapes<Sphere>().push_back(sphere);
   scene_.groups[0].primitives.push_back(
-      {PrimitiveKind::Sphere, std::uint32_t(scene_.spheres.size() - 1)});
+      {kindOf<Sphere>, std::uint32_t(scene_.shapes<Sphere>().size() - 1)});
 }
 
 // p N, then N vertices: a flat polygon, exactly like the .sc `polygon`.

@@ -387,7 +387,7 @@ Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnin
 
   ObjMaterials materials(scene, scan, tiny, name);
   FaceBuilder faces(scene, scan, usable, materials, name);
-  scene.triangles.reserve(scan.triangles);
+  scene.shapes<Triangle>().reserve(scan.triangles);
   for (const tinyobj::shape_t& shape : tiny.shapes)
     faces.addShape(shape.mesh);
   faces.checkAllFacesRead();

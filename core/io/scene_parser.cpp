@@ -10,7 +10,7 @@
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
 #include "core/shapes/cone.h"
-#include "core/shapes/geometry.h"
+#include "core/shapes/shape_kinds.h"
 #include "core/shapes/triangle.h"
 
 #include <algorithm>
@@ -573,8 +573,8 @@ void Parser::sphere(Command& c) {
       error(c.keyword, outsideModelRangeMessage("sphere"));
       return;
     }
-    scene_.spheres.push_back(sphere);
-    addPrimitive(PrimitiveKind::Sphere, scene_.spheres.size() - 1);
+    scene_.shapes<Sphere>().push_back(sphere);
+    addPrimitive(kindOf<Sphere>, scene_.shapes<Sphere>().size() - 1);
     return;
   }
   // A non-uniform scale makes it the image of the unit sphere under x -> L (r x) + center.
@@ -598,8 +598,8 @@ void Parser::sphere(Command& c) {
   }
   e.material = currentMaterial();
   e.origin = origin(c);
-  scene_.ellipsoids.push_back(e);
-  addPrimitive(PrimitiveKind::Ellipsoid, scene_.ellipsoids.size() - 1);
+  scene_.shapes<Ellipsoid>().push_back(e);
+  addPrimitive(kindOf<Ellipsoid>, scene_.shapes<Ellipsoid>().size() - 1);
 }
 
 void Parser::polygon(Command& c) {
@@ -692,8 +692,8 @@ void Parser::cone(Command& c) {
   }
   cone.material = currentMaterial();
   cone.origin = origin(c);
-  scene_.cones.push_back(cone);
-  addPrimitive(PrimitiveKind::Cone, scene_.cones.size() - 1);
+  scene_.shapes<Cone>().push_back(cone);
+  addPrimitive(kindOf<Cone>, scene_.shapes<Cone>().size() - 1);
 }
 
 void Parser::triangle(Command& c) {
@@ -765,8 +765,8 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
   }
   t.material = currentMaterial();
   t.origin = origin(c);
-  scene_.triangles.push_back(t);
-  addPrimitive(PrimitiveKind::Triangle, scene_.triangles.size() - 1);
+  scene_.shapes<Triangle>().push_back(t);
+  addPrimitive(kindOf<Triangle>, scene_.shapes<Triangle>().size() - 1);
 }
 
 // ---------------------------------------------------------------------------

@@ -111,45 +111,39 @@ private:
 
   void primitive(const PrimitiveRef& ref, int depth) {
     material(scene_.material(ref), depth);
-    switch (ref.kind) {
-    case PrimitiveKind::Sphere: {
-      const Sphere& s = scene_.spheres[ref.index];
-      line(depth) << "sphere " << vec(s.center) << " " << num(s.radius) << "\n";
-      break;
-    }
-    case PrimitiveKind::Ellipsoid: {
-      // The unit sphere under objectToWorld.
-      const Ellipsoid& e = scene_.ellipsoids[ref.index];
-      line(depth) << "push\n";
-      placed(e.objectToWorld, e.center, depth + 1);
-      line(depth + 1) << "sphere 0 0 0 1\n";
-      line(depth) << "pop\n";
-      break;
-    }
-    case PrimitiveKind::Polygon: {
-      const Polygon& p = scene_.polygons[ref.index];
-      line(depth) << "polygon " << p.vertexCount;
-      for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
-        out_ << "  " << vec(scene_.polygonVertices[p.firstVertex + i]);
-      }
-      out_ << "\n";
-      break;
-    }
-    case PrimitiveKind::Cone: cone(scene_.cones[ref.index], depth); break;
-    case PrimitiveKind::Triangle: {
-      const Triangle& t = scene_.triangles[ref.index];
-      line(depth) << (t.smooth() ? "ptriangle" : "triangle");
-      for (int i = 0; i < 3; ++i) {
-        out_ << "  " << vec(scene_.meshVertices[t.vertex[std::size_t(i)]]);
-        if (t.smooth()) out_ << "  " << vec(scene_.meshNormals[t.normal[std::size_t(i)]]);
-      }
-      out_ << "\n";
-      break;
-    }
-    }
+    scene_.visit(ref, [&](const auto& shape) { write(shape, depth); });
   }
 
-  void cone(const Cone& c, int depth) {
+  void write(const Sphere& s, int depth) {
+    line(depth) << "sphere " << vec(s.center) << " " << num(s.radius) << "\n";
+  }
+
+  // The unit sphere under objectToWorld.
+  void write(const Ellipsoid& e, int depth) {
+    line(depth) << "push\n";
+    placed(e.objectToWorld, e.center, depth + 1);
+    line(depth + 1) << "sphere 0 0 0 1\n";
+    line(depth) << "pop\n";
+  }
+
+  void write(const Polygon& p, int depth) {
+    line(depth) << "polygon " << p.vertexCount;
+    for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
+      out_ << "  " << vec(scene_.polygonVertices[p.firstVertex + i]);
+    }
+    out_ << "\n";
+  }
+
+  void write(const Triangle& t, int depth) {
+    line(depth) << (t.smooth() ? "ptriangle" : "triangle");
+    for (int i = 0; i < 3; ++i) {
+      out_ << "  " << vec(scene_.meshVertices[t.vertex[std::size_t(i)]]);
+      if (t.smooth()) out_ << "  " << vec(scene_.meshNormals[t.normal[std::size_t(i)]]);
+    }
+    out_ << "\n";
+  }
+
+  void write(const Cone& c, int depth) {
     const Mat3& m = c.objectToWorld;
     if (isCircular(c)) {
       const double unit = glm::length(m[0]); // world length of the frame's x

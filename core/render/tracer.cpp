@@ -50,10 +50,6 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
 // toRgb). For every finite radiance this changes nothing.
 Color saturated(const Color& c) { return glm::min(c, Color(std::numeric_limits<double>::max())); }
 
-bool isFlat(PrimitiveRef ref) {
-  return ref.kind == PrimitiveKind::Polygon || ref.kind == PrimitiveKind::Triangle;
-}
-
 } // namespace
 
 Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCache cache)
@@ -105,34 +101,26 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
                     RayTreeNode* record) {
   const Material& m = scene_.material(hit.primitive);
   const Vec3 point = ray.at(hit.t);
-  const Vec3 normal = outwardNormal(scene_, hit.primitive, point);
+  const SurfacePoint surface = scene_.surfaceAt(hit.primitive, point);
   // Leaving iff N.D > 0; shade with the normal facing the ray.
   // Both the test and where new rays start use the geometric normal `g`.
-  const bool leaving = glm::dot(normal, ray.dir) > 0.0;
-  const Vec3 g = leaving ? -normal : normal;
+  const bool leaving = glm::dot(surface.outward, ray.dir) > 0.0;
+  const Vec3 g = leaving ? -surface.outward : surface.outward;
   SurfaceFrame frame = frameAt(point, g, ray.origin);
-  // A smooth triangle is shaded with its interpolated normal, turned the same
+  // The shading normal (a smooth triangle's interpolated one), turned the same
   // way; one that faces away from the ray's side of the surface (vertex
   // normals bent past the face) would light the wrong side: `g` then.
-  Vec3 n = g;
-  if (hit.primitive.kind == PrimitiveKind::Triangle) {
-    const Vec3 interpolated = interpolatedNormal(scene_, hit.primitive, point);
-    const Vec3 turned = leaving ? -interpolated : interpolated;
-    if (glm::dot(turned, g) > 0.0) n = turned;
-    // Shadow and reflected rays start from the curved surface the normals
-    // describe (see liftedPoint), on the outward side only.
-    const Triangle& tri = scene_.triangles[hit.primitive.index];
-    if (!leaving && tri.smooth()) {
-      const Vec3 lifted =
-          liftedPoint(tri, scene_.meshVertices.data(), scene_.meshNormals.data(), point);
-      frame.above = frameAt(lifted, g, ray.origin).above;
-    }
-  }
+  const Vec3 turned = leaving ? -surface.shading : surface.shading;
+  const Vec3 n = glm::dot(turned, g) > 0.0 ? turned : g;
+  // Shadow and reflected rays start where the surface says (a smooth
+  // triangle's curved surface, see liftedPoint), on the outward side only.
+  if (!leaving && surface.outwardStart)
+    frame.above = frameAt(*surface.outwardStart, g, ray.origin).above;
   // A grazing ray can meet a bent shading normal from behind; mirroring or
   // refracting about it would send the ray through the surface, so those use
   // `g` there. (For every other primitive n is g and this changes nothing.)
   const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
-  const PrimitiveRef* skip = isFlat(hit.primitive) ? &hit.primitive : nullptr;
+  const PrimitiveRef* skip = isFlat(hit.primitive.kind) ? &hit.primitive : nullptr;
 
   Color diffuse(0.0), specular(0.0);
   // A material with kdr = ksr = 0 cannot reflect light, so no shadow ray could
@@ -214,7 +202,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
     record->hit = true;
     record->where = hit;
     record->point = point;
-    record->normal = normal;
+    record->normal = surface.outward;
     record->shadingNormal = n;
     record->leaving = leaving;
     record->totalInternalReflection = tir;

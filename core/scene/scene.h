@@ -3,10 +3,8 @@
 
 #include "core/scene/camera.h"
 #include "core/scene/material.h"
-#include "core/shapes/cone.h"
 #include "core/shapes/polygon_edges.h"
-#include "core/shapes/primitives.h"
-#include "core/shapes/triangle.h"
+#include "core/shapes/shape_kinds.h"
 
 #include <string>
 #include <vector>
@@ -35,29 +33,55 @@ struct Scene {
 
   std::vector<Light> lights; // light i of the user interface is lights[i - 1]
   std::vector<Material> materials;
-  std::vector<Sphere> spheres;
-  std::vector<Ellipsoid> ellipsoids;
-  std::vector<Polygon> polygons;
+  ShapeStorage<ShapeKinds> storage; // the primitives, a vector per kind: use shapes<Kind>()
   std::vector<Vec3> polygonVertices;
   std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices
-  std::vector<Cone> cones;
-  std::vector<Triangle> triangles;
-  std::vector<Vec3> meshVertices; // shared by triangles (Triangle::vertex)
-  std::vector<Vec3> meshNormals;  // unit vertex normals of smooth triangles
+  std::vector<Vec3> meshVertices;                   // shared by triangles (Triangle::vertex)
+  std::vector<Vec3> meshNormals;                    // unit vertex normals of smooth triangles
   std::vector<Group> groups{Group{}};
   std::vector<std::string> files; // files[0] is the main scene file
 
-  std::size_t primitiveCount() const {
-    return spheres.size() + ellipsoids.size() + polygons.size() + cones.size() + triangles.size();
+  template <class Kind> std::vector<Kind>& shapes() {
+    return std::get<std::vector<Kind>>(storage.vectors);
   }
+  template <class Kind> const std::vector<Kind>& shapes() const {
+    return std::get<std::vector<Kind>>(storage.vectors);
+  }
+  std::size_t primitiveCount() const {
+    return std::apply([](const auto&... v) { return (v.size() + ...); }, storage.vectors);
+  }
+  // The arrays shapes index into, as the shape functions take them.
+  ShapeArrays arrays() const {
+    return {polygonVertices, polygonEdgeIndices, meshVertices, meshNormals};
+  }
+
+  // Calls f with the shape `ref` names, as its own type: the one place that
+  // dispatches on the kind. Every kind's call must return the same type.
+  template <class F> decltype(auto) visit(PrimitiveRef ref, F&& f) const {
+    return visitFrom<0>(ref, f);
+  }
+
   Aabb bounds(PrimitiveRef ref) const;
   std::uint32_t materialIndex(PrimitiveRef ref) const;
   const Material& material(PrimitiveRef ref) const { return materials[materialIndex(ref)]; }
   Origin origin(PrimitiveRef ref) const;
+  // The normals and ray starts shading needs at `point` on the primitive.
+  SurfacePoint surfaceAt(PrimitiveRef ref, const Vec3& point) const;
   // "sphere #3 (table.sc:12)" and the like, for diagnostics and the ray tree.
   std::string describe(PrimitiveRef ref) const;
   // Every primitive, in the order of the kinds, for brute-force queries.
   std::vector<PrimitiveRef> allPrimitives() const;
+
+private:
+  template <std::size_t I, class F> decltype(auto) visitFrom(PrimitiveRef ref, F& f) const {
+    using Kind = ShapeKinds::At<I>;
+    if constexpr (I + 1 == kShapeKindCount) {
+      return f(shapes<Kind>()[ref.index]);
+    } else {
+      if (ref.kind == kindOf<Kind>) return f(shapes<Kind>()[ref.index]);
+      return visitFrom<I + 1>(ref, f);
+    }
+  }
 };
 
 // Adds a polygon (whose vertices passed polygonProblem) to the scene and to

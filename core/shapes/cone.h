@@ -20,6 +20,9 @@ namespace prism {
 // makes its cross-sections ellipses), and the stored inverse takes rays into
 // the frame, where a ray keeps its parameter t (as for Ellipsoid).
 struct Cone {
+  static constexpr const char* kName = "cone";
+  static constexpr bool kFlat = false; // a ray leaving the inside meets it again
+
   Mat3 objectToWorld{1.0};       // columns: the frame's x, y and z axes in the world
   Vec3 objectToWorldOffset{0.0}; // where the base centre is
   Mat3 worldToObject{1.0};

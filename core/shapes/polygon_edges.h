@@ -1,5 +1,5 @@
 // Which edges of a large polygon a horizontal line can cross, found in
-// logarithmic time. The polygon test (core/shapes/geometry.cpp) counts the edges that
+// logarithmic time. The polygon test (core/shapes/polygon.cpp) counts the edges that
 // cross the half-line from the hit point toward +u in the polygon's 2D
 // projection; an edge can cross only where the line's v lies in its v-range
 // [min(va, vb), max(va, vb)). For a polygon of many vertices, testing every

@@ -150,4 +150,13 @@ Aabb boundsOf(const Triangle& tri, const Vec3* vertices) {
   return box;
 }
 
+SurfacePoint surfaceAt(const Triangle& tri, const ShapeArrays& arrays, const Vec3& point) {
+  const Vec3* vertices = arrays.meshVertices.data();
+  const Vec3 outward = geometricNormal(tri, vertices);
+  if (!tri.smooth()) return {outward, outward, std::nullopt};
+  const Vec3* normals = arrays.meshNormals.data();
+  return {outward, interpolatedNormal(tri, vertices, normals, point),
+          liftedPoint(tri, vertices, normals, point)};
+}
+
 } // namespace prism

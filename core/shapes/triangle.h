@@ -5,6 +5,8 @@
 #pragma once
 
 #include "core/shapes/primitives.h"
+#include "core/shapes/shape_arrays.h"
+#include "core/shapes/surface_point.h"
 
 #include <array>
 #include <optional>
@@ -20,6 +22,9 @@ inline constexpr std::uint32_t kNoNormal = 0xFFFFFFFFu;
 // normals, unit and pointing to the outward side, are
 // Scene::meshNormals[normal[i]]; a flat one has normal[0] == kNoNormal.
 struct Triangle {
+  static constexpr const char* kName = "triangle";
+  static constexpr bool kFlat = true; // a ray leaving it cannot meet it again
+
   std::array<std::uint32_t, 3> vertex{0, 0, 0};
   std::array<std::uint32_t, 3> normal{kNoNormal, kNoNormal, kNoNormal};
   std::uint32_t material = 0;
@@ -59,5 +64,20 @@ Vec3 interpolatedNormal(const Triangle& tri, const Vec3* vertices, const Vec3* n
 Vec3 liftedPoint(const Triangle& tri, const Vec3* vertices, const Vec3* normals, const Vec3& point);
 
 Aabb boundsOf(const Triangle& tri, const Vec3* vertices);
+
+// The shape interface (see shape_kinds.h).
+inline bool intersect(const Triangle& tri, const ShapeArrays& arrays, const Ray& ray,
+                      Interval range, double& t) {
+  return intersect(tri, arrays.meshVertices.data(), ray, range, t);
+}
+inline Vec3 outwardNormal(const Triangle& tri, const ShapeArrays& arrays, const Vec3&) {
+  return geometricNormal(tri, arrays.meshVertices.data());
+}
+inline Aabb boundsOf(const Triangle& tri, const ShapeArrays& arrays) {
+  return boundsOf(tri, arrays.meshVertices.data());
+}
+// The geometric normal; for a smooth triangle also the interpolated normal and
+// the lifted start of rays leaving its outward side.
+SurfacePoint surfaceAt(const Triangle& tri, const ShapeArrays& arrays, const Vec3& point);
 
 } // namespace prism

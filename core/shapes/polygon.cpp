@@ -1,37 +1,10 @@
-#include "core/shapes/geometry.h"
+#include "core/shapes/polygon.h"
 
-#include <array>
 #include <cmath>
 
 namespace prism {
 
 namespace {
-
-// Roots of |f + t d|^2 = r^2 in the form that keeps precision when the origin is
-// far from the sphere compared with its radius (the discriminant is computed from
-// the distance of the centre to the ray's line, not as a difference of squares
-// of large numbers). `d` need not be unit length.
-bool nearestQuadricRoot(const Vec3& f, const Vec3& d, double r2, Interval range, double& t) {
-  const double a = glm::dot(d, d);
-  const double b = glm::dot(f, d); // half of the usual b
-  const Vec3 l = f - (b / a) * d;  // centre-to-line offset
-  const double disc = a * (r2 - glm::dot(l, l));
-  if (disc < 0.0) return false;
-  const double q = -b - std::copysign(std::sqrt(disc), b);
-  const double c = glm::dot(f, f) - r2;
-  double t0 = q != 0.0 ? c / q : 0.0;
-  double t1 = q / a;
-  if (t0 > t1) std::swap(t0, t1);
-  if (range.contains(t0)) {
-    t = t0;
-    return true;
-  }
-  if (range.contains(t1)) {
-    t = t1;
-    return true;
-  }
-  return false;
-}
 
 // The two axes a polygon keeps when its dropAxis is dropped, in the order
 // that keeps the projection's orientation (u, v) = (y, z), (z, x), (x, y).
@@ -50,17 +23,6 @@ Vec3 newellNormal(std::span<const Vec3> v) {
 }
 
 } // namespace
-
-bool intersect(const Sphere& s, const Ray& ray, Interval range, double& t) {
-  return nearestQuadricRoot(ray.origin - s.center, ray.dir, s.radius * s.radius, range, t);
-}
-
-bool intersect(const Ellipsoid& e, const Ray& ray, Interval range, double& t) {
-  // In the unit sphere's space the ray keeps its parameter: X(t) maps to X'(t).
-  const Vec3 o = e.worldToObject * ray.origin + e.worldToObjectOffset;
-  const Vec3 d = e.worldToObject * ray.dir;
-  return nearestQuadricRoot(o, d, 1.0, range, t);
-}
 
 ProjectedAxes polygonAxes(const Polygon& p) {
   return {kProjectedAxes[p.dropAxis][0], kProjectedAxes[p.dropAxis][1]};
@@ -102,20 +64,6 @@ bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* e
   return inside;
 }
 
-Vec3 normalAt(const Sphere& s, const Vec3& point) { return glm::normalize(point - s.center); }
-
-Vec3 normalAt(const Ellipsoid& e, const Vec3& point) {
-  const Vec3 objectNormal = e.worldToObject * point + e.worldToObjectOffset;
-  return glm::normalize(e.normalToWorld * objectNormal);
-}
-
-Aabb boundsOf(const Sphere& s) {
-  Aabb box;
-  box.extend(s.center - Vec3(s.radius));
-  box.extend(s.center + Vec3(s.radius));
-  return box;
-}
-
 Aabb boundsOf(const Polygon& p, const Vec3* vertices) {
   // A polygon is hit on its plane, where the hit's projection (the dropped
   // axis left out) lies inside the vertices' projection. Its vertices may be
@@ -132,23 +80,6 @@ Aabb boundsOf(const Polygon& p, const Vec3* vertices) {
     box.extend(v);
   }
   return box;
-}
-
-Ellipsoid makeEllipsoid(const Mat3& linear, const Vec3& offset) {
-  Ellipsoid e;
-  e.worldToObject = glm::inverse(linear);
-  e.worldToObjectOffset = -(e.worldToObject * offset);
-  e.normalToWorld = glm::transpose(e.worldToObject);
-  e.objectToWorld = linear;
-  e.center = offset;
-  // The unit sphere's image extends sqrt(sum_j A_ij^2) along world axis i
-  // (hypot: no underflow for a very flat ellipsoid).
-  const Mat3& m = linear;
-  const Vec3 half(std::hypot(m[0].x, m[1].x, m[2].x), std::hypot(m[0].y, m[1].y, m[2].y),
-                  std::hypot(m[0].z, m[1].z, m[2].z));
-  e.bounds.extend(offset - half);
-  e.bounds.extend(offset + half);
-  return e;
 }
 
 std::optional<std::string> polygonProblem(std::span<const Vec3> vertices) {

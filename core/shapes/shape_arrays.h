@@ -1,0 +1,21 @@
+// The arrays of a scene that shapes index into rather than hold: polygon
+// vertices and edge indices, mesh vertices and vertex normals. A view, cheap
+// to pass; the Scene owns the storage.
+#pragma once
+
+#include "core/math/math.h"
+
+#include <span>
+
+namespace prism {
+
+class PolygonEdgeIndex;
+
+struct ShapeArrays {
+  std::span<const Vec3> polygonVertices;
+  std::span<const PolygonEdgeIndex> polygonEdgeIndices;
+  std::span<const Vec3> meshVertices;
+  std::span<const Vec3> meshNormals; // unit vertex normals of smooth triangles
+};
+
+} // namespace prism

@@ -151,6 +151,25 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
   return command;
 }
 
+RenderSettings renderSettings(const RenderCommandOptions& o, const Scene& scene) {
+  RenderSettings settings;
+  settings.width = o.size.empty() ? scene.width : o.size[0];
+  settings.height = o.size.empty() ? scene.height : o.size[1];
+  settings.maxDepth = o.depth.value_or(5);
+  settings.thresh = o.thresh;
+  settings.jitter = o.jitter;
+  settings.threads = resolveThreadCount(o.threads);
+  return settings;
+}
+
+std::optional<std::string> imageMemoryProblem(const RenderSettings& settings,
+                                              std::uint64_t bytesPerPixel,
+                                              const std::string& what) {
+  return memoryProblem(imageBytes(settings.width, settings.height, bytesPerPixel),
+                       "a " + std::to_string(settings.width) + " x " +
+                           std::to_string(settings.height) + " " + what);
+}
+
 int runRenderCommand(const RenderCommandOptions& o) {
   if (const std::optional<std::string> problem = cameraOptionsProblem(o)) {
     std::cerr << "prism: error: " << *problem << "\n";
@@ -174,13 +193,7 @@ int runRenderCommand(const RenderCommandOptions& o) {
   const Scene& scene = *loaded;
   const double loadSeconds = secondsSince(loadStart);
 
-  RenderSettings settings;
-  settings.width = o.size.empty() ? scene.width : o.size[0];
-  settings.height = o.size.empty() ? scene.height : o.size[1];
-  settings.maxDepth = o.depth.value_or(5);
-  settings.thresh = o.thresh;
-  settings.jitter = o.jitter;
-  settings.threads = resolveThreadCount(o.threads);
+  const RenderSettings settings = renderSettings(o, scene);
 
   if (!o.pixel.empty() && (o.pixel[0] >= settings.width || o.pixel[1] >= settings.height)) {
     std::cerr << "prism: error: --pixel " << o.pixel[0] << " " << o.pixel[1] << " is outside the "
@@ -188,10 +201,8 @@ int runRenderCommand(const RenderCommandOptions& o) {
     return kExitUsage;
   }
   if (o.pixel.empty()) {
-    const std::string what =
-        "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) + " render";
-    if (const std::optional<std::string> problem = memoryProblem(
-            imageBytes(settings.width, settings.height, kRenderBytesPerPixel), what)) {
+    if (const std::optional<std::string> problem =
+            imageMemoryProblem(settings, kRenderBytesPerPixel, "render")) {
       std::cerr << "prism: error: " << *problem << "\n";
       return kExitFailure;
     }

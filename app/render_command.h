@@ -5,7 +5,9 @@
 #include "core/accel/accel.h"
 #include "core/render/renderer.h"
 #include "core/scene/camera.h"
+#include "core/scene/scene.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -56,6 +58,16 @@ std::optional<std::string> cameraOptionsProblem(const RenderCommandOptions& opti
 std::optional<std::string> applyCameraOptions(const RenderCommandOptions& options,
                                               CameraSpec& camera);
 bool hasCameraOptions(const RenderCommandOptions& options);
+
+// The one place the options become render settings, for `render`, `view` and
+// its headless fallback: --size over the scene's resolution, depth, threshold,
+// jitter, threads.
+RenderSettings renderSettings(const RenderCommandOptions& options, const Scene& scene);
+
+// Why an image of `settings`' size, at `bytesPerPixel`, cannot fit in memory
+// ("a 32768 x 32768 render needs ..."), or nothing. `what`: "render", "preview".
+std::optional<std::string> imageMemoryProblem(const RenderSettings& settings,
+                                              std::uint64_t bytesPerPixel, const std::string& what);
 
 // Adds the `render` subcommand to `app`, filling `options`.
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options);

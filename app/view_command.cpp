@@ -46,17 +46,10 @@ PreparedView prepareView(const ViewCommandOptions& o, LoadProgress& progress) {
     if (hasCameraOptions(o.render)) v.camera = camera; // an edit over the file's camera
     v.scenePath = o.render.scene;
     v.sizeFromScene = o.render.size.empty();
-    v.settings.width = v.sizeFromScene ? scene.width : o.render.size[0];
-    v.settings.height = v.sizeFromScene ? scene.height : o.render.size[1];
-    v.settings.maxDepth = o.render.depth.value_or(5);
-    v.settings.thresh = o.render.thresh;
-    v.settings.jitter = o.render.jitter;
-    v.settings.threads = resolveThreadCount(o.render.threads);
+    v.settings = renderSettings(o.render, scene);
     v.accel = o.render.accel;
-    const std::string what = "a " + std::to_string(v.settings.width) + " x " +
-                             std::to_string(v.settings.height) + " preview";
-    if (const std::optional<std::string> problem = memoryProblem(
-            imageBytes(v.settings.width, v.settings.height, kPreviewBytesPerPixel), what)) {
+    if (const std::optional<std::string> problem =
+            imageMemoryProblem(v.settings, kPreviewBytesPerPixel, "preview")) {
       std::cerr << "prism: error: " << *problem << "\n";
       return {nullptr, kExitFailure};
     }

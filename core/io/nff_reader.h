@@ -6,7 +6,8 @@
 // a SceneError, exactly as for .sc files.
 #pragma once
 
-#include "core/io/scene_parser.h"
+#include "core/io/diagnostic.h"
+#include "core/scene/scene.h"
 
 #include <filesystem>
 #include <string>

@@ -6,7 +6,8 @@
 // and OBJ". Errors are Diagnostics with file, line and column (SceneError).
 #pragma once
 
-#include "core/io/scene_parser.h"
+#include "core/io/diagnostic.h"
+#include "core/scene/scene.h"
 
 #include <filesystem>
 #include <vector>

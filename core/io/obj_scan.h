@@ -16,7 +16,8 @@
 // is looked up, which libraries are read) comes from this pass instead.
 #pragma once
 
-#include "core/io/scene_parser.h"
+#include "core/io/diagnostic.h"
+#include "core/scene/scene.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -4,6 +4,7 @@
 // the messages and keep its last good scene.
 #pragma once
 
+#include "core/io/diagnostic.h"
 #include "core/scene/scene.h"
 
 #include <filesystem>
@@ -13,25 +14,6 @@
 #include <vector>
 
 namespace prism {
-
-struct Diagnostic {
-  std::string file; // as the user named it (the include path for included files)
-  int line = 0;     // 1-based
-  int column = 0;   // 1-based, in bytes
-  std::string message;
-
-  // "FILE:LINE:COLUMN: error: MESSAGE"
-  std::string format() const;
-};
-
-class SceneError : public std::runtime_error {
-public:
-  explicit SceneError(std::vector<Diagnostic> diagnostics);
-  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
-
-private:
-  std::vector<Diagnostic> diagnostics_;
-};
 
 // Parses the file at `path`; includes are resolved relative to the including file.
 Scene loadScene(const std::filesystem::path& path);

@@ -2,6 +2,7 @@
 // the whole shape interface to be listed; names, flatness, storage, counts and
 // the dispatch follow the list, so no kind can be left out of any of them.
 #include "core/scene/scene.h"
+#include "core/shapes/crossings.h"
 #include "core/shapes/shape_kinds.h"
 
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@ struct TestBox {
 };
 bool intersect(const TestBox&, const ShapeArrays&, const Ray&, Interval, double&) { return false; }
 Vec3 outwardNormal(const TestBox&, const ShapeArrays&, const Vec3&) { return Vec3(0, 0, 1); }
+Vec2 uvAt(const TestBox&, const ShapeArrays&, const Vec3& p) { return {p.x, p.y}; }
 Aabb boundsOf(const TestBox& b, const ShapeArrays&) { return b.box; }
 
 // The same without bounds: not a shape kind.
@@ -35,9 +37,27 @@ bool intersect(const Unbounded&, const ShapeArrays&, const Ray&, Interval, doubl
   return false;
 }
 Vec3 outwardNormal(const Unbounded&, const ShapeArrays&, const Vec3&) { return Vec3(0, 0, 1); }
+Vec2 uvAt(const Unbounded&, const ShapeArrays&, const Vec3&) { return Vec2(0.0); }
+
+// With bounds but without surface coordinates: not a shape kind either.
+struct Uncharted {
+  static constexpr const char* kName = "uncharted";
+  static constexpr bool kFlat = false;
+  std::uint32_t material = 0;
+  Origin origin;
+};
+bool intersect(const Uncharted&, const ShapeArrays&, const Ray&, Interval, double&) {
+  return false;
+}
+Vec3 outwardNormal(const Uncharted&, const ShapeArrays&, const Vec3&) { return Vec3(0, 0, 1); }
+[[maybe_unused]] Aabb boundsOf(const Uncharted&, const ShapeArrays&) { return Aabb{}; }
 
 static_assert(ShapeKind<TestBox>);
 static_assert(!ShapeKind<Unbounded>);
+static_assert(!ShapeKind<Uncharted>);
+// The kinds that bound a solid list every crossing; the open ones do not.
+static_assert(ClosedShape<Sphere> && ClosedShape<Ellipsoid>);
+static_assert(!ClosedShape<Polygon> && !ClosedShape<Cone> && !ClosedShape<Triangle>);
 static_assert(ShapeKind<Sphere> && ShapeKind<Ellipsoid> && ShapeKind<Polygon> && ShapeKind<Cone> &&
               ShapeKind<Triangle>);
 

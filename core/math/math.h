@@ -10,6 +10,7 @@
 
 namespace prism {
 
+using Vec2 = glm::dvec2; // surface coordinates (u, v)
 using Vec3 = glm::dvec3;
 using Color = glm::dvec3; // linear RGB radiance; never clamped before exposure
 using Mat3 = glm::dmat3;

@@ -28,7 +28,10 @@ void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, i
   out << pad << "  outward normal " << fmt(node.normal) << ", "
       << (node.leaving ? "leaving (N.D > 0)" : "entering (N.D <= 0)") << ", shading normal "
       << fmt(node.shadingNormal) << "\n";
-  const Material& m = scene.material(node.where.primitive);
+  out << pad << "  surface (u, v) = (" << node.uv.x << ", " << node.uv.y << ")";
+  if (node.part != 0) out << ", part " << node.part;
+  out << "\n";
+  const Material& m = node.material;
   out << pad << "  material C " << fmt(m.color) << " kdr " << m.kdr << " ksr " << m.ksr << " kst "
       << m.kst << " e " << m.e << " ir " << m.ir << "\n";
   for (const LightTerm& t : node.lights) {

@@ -31,10 +31,14 @@ struct RayTreeNode {
   Vec3 point{0.0};
   Vec3 normal{0.0};        // outward
   Vec3 shadingNormal{0.0}; // flipped to face the incoming ray
+  Vec2 uv{0.0};            // the surface coordinates of the hit (SurfacePoint::uv)
+  std::uint32_t part = 0;  // the face of a compound shape
+  Material material;       // as looked up at the hit (Scene::materialAt)
   bool leaving = false;
   bool totalInternalReflection = false;
   std::vector<LightTerm> lights;
-  // The four terms of the shading formula (docs/rendering-model.md), already multiplied by their coefficients.
+  // The four terms of the shading formula (docs/rendering-model.md), already multiplied by their
+  // coefficients.
   Color ambientDiffuse{0.0}; // C_mat kdr [I_a + sum diffuse]
   Color highlight{0.0};      // ksr sum specular
   Color reflected{0.0};      // ksr I_r

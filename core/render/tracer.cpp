@@ -97,11 +97,26 @@ bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, st
   return true;
 }
 
+// The hit surface seen from the incoming ray: which side it meets, the
+// normals turned toward it, and where new rays start.
+struct Tracer::Incidence {
+  Vec3 point;
+  bool leaving; // N.D > 0: the ray leaves the solid (or meets a back face)
+  Vec3 g;       // the geometric normal, facing the ray
+  Vec3 n;       // the shading normal, facing the ray
+  Vec3 nr;      // the normal mirror and refracted rays turn about
+  SurfaceFrame frame;
+  const PrimitiveRef* skip; // the flat primitive new rays leave, or null
+};
+
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts,
                     RayTreeNode* record) {
-  const Material& m = scene_.material(hit.primitive);
   const Vec3 point = ray.at(hit.t);
-  const SurfacePoint surface = scene_.surfaceAt(hit.primitive, point);
+  // The ray tree shows the surface coordinates; rendering needs none yet.
+  const SurfacePoint surface =
+      scene_.surfaceAt(hit.primitive, point,
+                       record != nullptr ? SurfaceDetail::WithCoordinates : SurfaceDetail::Shading);
+  const Material m = scene_.materialAt(surface);
   // Leaving iff N.D > 0; shade with the normal facing the ray.
   // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(surface.outward, ray.dir) > 0.0;
@@ -120,8 +135,35 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   // refracting about it would send the ray through the surface, so those use
   // `g` there. (For every other primitive n is g and this changes nothing.)
   const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
-  const PrimitiveRef* skip = isFlat(hit.primitive.kind) ? &hit.primitive : nullptr;
+  const Incidence at{
+      point, leaving, g, n, nr, frame, isFlat(hit.primitive.kind) ? &hit.primitive : nullptr};
 
+  const DirectLight direct = directLighting(ray, at, m, depth, counts, record);
+  if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid
+  const Color reflected = reflection(ray, at, m, depth, counts, record);
+  const Color transmitted = transmission(ray, at, m, depth, counts, record);
+  const Color radiance = direct.ambientDiffuse + direct.highlight + reflected + transmitted;
+  if (record != nullptr) {
+    record->hit = true;
+    record->where = hit;
+    record->point = point;
+    record->normal = surface.outward;
+    record->shadingNormal = n;
+    record->uv = surface.uv;
+    record->part = surface.part;
+    record->material = m;
+    record->leaving = leaving;
+    record->ambientDiffuse = direct.ambientDiffuse;
+    record->highlight = direct.highlight;
+    record->reflected = reflected;
+    record->transmitted = transmitted;
+    record->radiance = radiance;
+  }
+  return radiance;
+}
+
+Tracer::DirectLight Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m,
+                                           int depth, RayCounts& counts, RayTreeNode* record) {
   Color diffuse(0.0), specular(0.0);
   // A material with kdr = ksr = 0 cannot reflect light, so no shadow ray could
   // change the result: none is traced (or counted).
@@ -130,31 +172,31 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
     const Light& light = scene_.lights[i];
     LightTerm term;
     term.light = int(i) + 1;
-    const Vec3 toLight = light.position - point;
+    const Vec3 toLight = light.position - at.point;
     const double r2 = glm::dot(toLight, toLight);
     term.distance = std::sqrt(r2);
     const double invR2 = 1.0 / r2;
     const Vec3 l = toLight / term.distance;
-    term.cosine = std::isfinite(invR2) ? glm::dot(n, l) : 0.0;
+    term.cosine = std::isfinite(invR2) ? glm::dot(at.n, l) : 0.0;
     // A light behind the surface, or at the shaded point itself, adds nothing.
     term.behind = !(term.cosine > 0.0);
     term.skipped = !term.behind && !reflectsLight;
     if (!term.behind && !term.skipped) {
-      const Vec3 shadowToLight = light.position - frame.above;
+      const Vec3 shadowToLight = light.position - at.frame.above;
       const double shadowLength = glm::length(shadowToLight);
       ++counts.shadow;
       // A blocker at or beyond the light does not count: the range ends there.
-      term.shadowed = shadowLength > 0.0 && blocked({frame.above, shadowToLight / shadowLength},
-                                                    shadowLength, skip, i, depth);
+      term.shadowed = shadowLength > 0.0 && blocked({at.frame.above, shadowToLight / shadowLength},
+                                                    shadowLength, at.skip, i, depth);
       if (term.shadowed && record != nullptr) {
-        accel_.closestHit({frame.above, shadowToLight / shadowLength}, Interval{0.0, shadowLength},
-                          skip, term.blocker);
+        accel_.closestHit({at.frame.above, shadowToLight / shadowLength},
+                          Interval{0.0, shadowLength}, at.skip, term.blocker);
       }
       if (!term.shadowed) {
         term.diffuse = light.intensity * (term.cosine * invR2);
         const Vec3 halfway = l - ray.dir;
         const double length = glm::length(halfway);
-        const double cosH = length > 0.0 ? glm::dot(n, halfway / length) : 0.0;
+        const double cosH = length > 0.0 ? glm::dot(at.n, halfway / length) : 0.0;
         term.specular = light.intensity * (std::pow(std::max(cosH, 0.0), m.e) * invR2);
         diffuse += term.diffuse;
         specular += term.specular;
@@ -162,57 +204,41 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
     }
     if (record != nullptr) record->lights.push_back(term);
   }
+  return {saturated(m.color * m.kdr) * saturated(scene_.ambient + diffuse),
+          m.ksr * saturated(specular)};
+}
 
-  const Color ambientDiffuse = saturated(m.color * m.kdr) * saturated(scene_.ambient + diffuse);
-  const Color highlight = m.ksr * saturated(specular);
-  Color reflected(0.0), transmitted(0.0);
-  bool tir = false;
-  RayTreeNode* reflectedRecord = nullptr;
-  RayTreeNode* transmittedRecord = nullptr;
-  if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid
-
-  if (depth < maxDepth_ && m.ksr > 0.0) {
-    ++counts.reflected;
-    if (record != nullptr) {
-      reflectedRecord = &record->children.emplace_back();
-      reflectedRecord->kind = RayKind::Reflected;
-    }
-    const Ray r{frame.above, reflect(ray.dir, nr)};
-    reflected = m.ksr * trace(r, depth + 1, counts, reflectedRecord, skip);
-  }
-  if (depth < maxDepth_ && m.kst > 0.0) {
-    // Entering a solid from air the index ratio is 1/ir; leaving it, ir.
-    const double eta = leaving ? m.ir : 1.0 / m.ir;
-    Vec3 dir;
-    if (refract(ray.dir, nr, eta, dir)) {
-      ++counts.transmitted;
-      if (record != nullptr) {
-        transmittedRecord = &record->children.emplace_back();
-        transmittedRecord->kind = RayKind::Transmitted;
-      }
-      transmitted = m.kst * trace({frame.below, dir}, depth + 1, counts, transmittedRecord, skip);
-    } else {
-      ++counts.tirEvents; // TIR moves no energy: I_t = 0, reflection unchanged
-      tir = true;
-    }
-  }
-
-  const Color radiance = ambientDiffuse + highlight + reflected + transmitted;
+Color Tracer::reflection(const Ray& ray, const Incidence& at, const Material& m, int depth,
+                         RayCounts& counts, RayTreeNode* record) {
+  if (!(depth < maxDepth_ && m.ksr > 0.0)) return Color(0.0);
+  ++counts.reflected;
+  RayTreeNode* child = nullptr;
   if (record != nullptr) {
-    record->hit = true;
-    record->where = hit;
-    record->point = point;
-    record->normal = surface.outward;
-    record->shadingNormal = n;
-    record->leaving = leaving;
-    record->totalInternalReflection = tir;
-    record->ambientDiffuse = ambientDiffuse;
-    record->highlight = highlight;
-    record->reflected = reflected;
-    record->transmitted = transmitted;
-    record->radiance = radiance;
+    child = &record->children.emplace_back();
+    child->kind = RayKind::Reflected;
   }
-  return radiance;
+  const Ray r{at.frame.above, reflect(ray.dir, at.nr)};
+  return m.ksr * trace(r, depth + 1, counts, child, at.skip);
+}
+
+Color Tracer::transmission(const Ray& ray, const Incidence& at, const Material& m, int depth,
+                           RayCounts& counts, RayTreeNode* record) {
+  if (!(depth < maxDepth_ && m.kst > 0.0)) return Color(0.0);
+  // Entering a solid from air the index ratio is 1/ir; leaving it, ir.
+  const double eta = at.leaving ? m.ir : 1.0 / m.ir;
+  Vec3 dir;
+  if (!refract(ray.dir, at.nr, eta, dir)) {
+    ++counts.tirEvents; // TIR moves no energy: I_t = 0, reflection unchanged
+    if (record != nullptr) record->totalInternalReflection = true;
+    return Color(0.0);
+  }
+  ++counts.transmitted;
+  RayTreeNode* child = nullptr;
+  if (record != nullptr) {
+    child = &record->children.emplace_back();
+    child->kind = RayKind::Transmitted;
+  }
+  return m.kst * trace({at.frame.below, dir}, depth + 1, counts, child, at.skip);
 }
 
 } // namespace prism

@@ -46,7 +46,27 @@ public:
   int maxDepth() const { return maxDepth_; }
 
 private:
+  // The surface as the incoming ray meets it (see tracer.cpp).
+  struct Incidence;
+  // The two local terms of the shading formula: C_mat kdr [I_a + sum diffuse]
+  // and ksr sum specular.
+  struct DirectLight {
+    Color ambientDiffuse{0.0};
+    Color highlight{0.0};
+  };
+
+  // The shading formula at a hit, in its named steps: the local terms from
+  // the lights, then the mirror ray, then the refracted ray.
   Color shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts, RayTreeNode* record);
+  DirectLight directLighting(const Ray& ray, const Incidence& at, const Material& m, int depth,
+                             RayCounts& counts, RayTreeNode* record);
+  // ksr I_r, or 0 at the depth limit or for a material that is no mirror.
+  Color reflection(const Ray& ray, const Incidence& at, const Material& m, int depth,
+                   RayCounts& counts, RayTreeNode* record);
+  // kst I_t, or 0 at the depth limit, for an opaque material, and on total
+  // internal reflection.
+  Color transmission(const Ray& ray, const Incidence& at, const Material& m, int depth,
+                     RayCounts& counts, RayTreeNode* record);
   // Whether anything but `skip` lies on `ray` before `length` (the light).
   bool blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                int depth);

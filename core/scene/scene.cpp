@@ -17,8 +17,13 @@ Origin Scene::origin(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.origin; });
 }
 
-SurfacePoint Scene::surfaceAt(PrimitiveRef ref, const Vec3& point) const {
-  return visit(ref, [&](const auto& shape) { return prism::surfaceAt(shape, arrays(), point); });
+SurfacePoint Scene::surfaceAt(PrimitiveRef ref, const Vec3& point, SurfaceDetail detail) const {
+  return visit(ref, [&](const auto& shape) {
+    SurfacePoint surface = prism::surfaceAt(shape, arrays(), point);
+    surface.material = shape.material;
+    if (detail == SurfaceDetail::WithCoordinates) surface.uv = uvAt(shape, arrays(), point);
+    return surface;
+  });
 }
 
 std::string Scene::describe(PrimitiveRef ref) const {

@@ -65,8 +65,14 @@ struct Scene {
   std::uint32_t materialIndex(PrimitiveRef ref) const;
   const Material& material(PrimitiveRef ref) const { return materials[materialIndex(ref)]; }
   Origin origin(PrimitiveRef ref) const;
-  // The normals and ray starts shading needs at `point` on the primitive.
-  SurfacePoint surfaceAt(PrimitiveRef ref, const Vec3& point) const;
+  // The surface record at `point` on the primitive: normals, ray starts,
+  // part and material, and with SurfaceDetail::WithCoordinates also (u, v).
+  SurfacePoint surfaceAt(PrimitiveRef ref, const Vec3& point,
+                         SurfaceDetail detail = SurfaceDetail::Shading) const;
+  // The material at a surface point: the one place shading looks it up. The
+  // values are constant per primitive today; textured materials will vary
+  // them with the point's coordinates here.
+  Material materialAt(const SurfacePoint& surface) const { return materials[surface.material]; }
   // "sphere #3 (table.sc:12)" and the like, for diagnostics and the ray tree.
   std::string describe(PrimitiveRef ref) const;
   // Every primitive, in the order of the kinds, for brute-force queries.

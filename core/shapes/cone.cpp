@@ -120,6 +120,12 @@ Vec3 normalAt(const Cone& c, const Vec3& point) {
   return glm::normalize(c.normalToWorld * g);
 }
 
+Vec2 uvAt(const Cone& c, const Vec3& point) {
+  constexpr double kPi = 3.14159265358979323846;
+  const Vec3 p = c.worldToObject * point + c.worldToObjectOffset;
+  return {0.5 + std::atan2(p.y, p.x) / (2.0 * kPi), std::clamp(p.z, 0.0, 1.0)};
+}
+
 bool isCircular(const Cone& c) {
   const Vec3& x = c.objectToWorld[0];
   const Vec3& y = c.objectToWorld[1];

@@ -55,6 +55,11 @@ bool intersect(const Cone& c, const Ray& ray, Interval range, double& t);
 // surface has no normal, the axis direction out of the tip.
 Vec3 normalAt(const Cone& c, const Vec3& point);
 
+// In the cone's frame: u the angle around the axis as a fraction of a turn
+// (0.5 on the frame's +x axis, growing toward +y), v the height from the base
+// circle (0) to the apex circle (1).
+Vec2 uvAt(const Cone& c, const Vec3& point);
+
 inline Aabb boundsOf(const Cone& c) { return c.bounds; }
 
 // True when the cross-sections are circles in the world (the frame's x and y

@@ -1,6 +1,7 @@
 #include "core/shapes/ellipsoid.h"
 
 #include "core/shapes/quadric.h"
+#include "core/shapes/sphere.h"
 
 #include <cmath>
 
@@ -16,6 +17,10 @@ bool intersect(const Ellipsoid& e, const Ray& ray, Interval range, double& t) {
 Vec3 normalAt(const Ellipsoid& e, const Vec3& point) {
   const Vec3 objectNormal = e.worldToObject * point + e.worldToObjectOffset;
   return glm::normalize(e.normalToWorld * objectNormal);
+}
+
+Vec2 uvAt(const Ellipsoid& e, const Vec3& point) {
+  return longitudeLatitude(glm::normalize(e.worldToObject * point + e.worldToObjectOffset));
 }
 
 Ellipsoid makeEllipsoid(const Mat3& linear, const Vec3& offset) {

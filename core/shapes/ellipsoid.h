@@ -29,6 +29,9 @@ struct Ellipsoid {
 
 bool intersect(const Ellipsoid& e, const Ray& ray, Interval range, double& t);
 Vec3 normalAt(const Ellipsoid& e, const Vec3& point);
+// The longitude and latitude (see Sphere) of the point on the unit sphere the
+// ellipsoid is the image of: they move with the ellipsoid.
+Vec2 uvAt(const Ellipsoid& e, const Vec3& point);
 // The ellipsoid that is the unit sphere under `objectToWorld` (linear part
 // `linear`, then `offset`); `linear` must be invertible.
 Ellipsoid makeEllipsoid(const Mat3& linear, const Vec3& offset);

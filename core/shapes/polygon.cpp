@@ -64,6 +64,18 @@ bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* e
   return inside;
 }
 
+Vec2 uvAt(const Polygon& p, const ShapeArrays& arrays, const Vec3& point) {
+  const Vec3& first = arrays.polygonVertices[p.firstVertex];
+  // The first edge of non-zero length (a file may repeat a vertex).
+  Vec3 edge(0.0);
+  for (std::uint32_t i = 1; i < p.vertexCount && edge == Vec3(0.0); ++i)
+    edge = arrays.polygonVertices[p.firstVertex + i] - first;
+  // In the plane exactly (the vertices are planar only to a tolerance).
+  const Vec3 u = glm::normalize(edge - glm::dot(edge, p.normal) * p.normal);
+  const Vec3 v = glm::cross(p.normal, u);
+  return {glm::dot(point - first, u), glm::dot(point - first, v)};
+}
+
 Aabb boundsOf(const Polygon& p, const Vec3* vertices) {
   // A polygon is hit on its plane, where the hit's projection (the dropped
   // axis left out) lies inside the vertices' projection. Its vertices may be

@@ -69,6 +69,9 @@ inline bool intersect(const Polygon& p, const ShapeArrays& arrays, const Ray& ra
   return intersect(p, arrays.polygonVertices.data(), edges, ray, range, t);
 }
 inline Vec3 outwardNormal(const Polygon& p, const ShapeArrays&, const Vec3&) { return p.normal; }
+// Planar coordinates in scene units: from the first vertex, u along the first
+// edge and v along normal x u (so (u, v) turn like the vertices).
+Vec2 uvAt(const Polygon& p, const ShapeArrays& arrays, const Vec3& point);
 inline Aabb boundsOf(const Polygon& p, const ShapeArrays& arrays) {
   return boundsOf(p, arrays.polygonVertices.data());
 }

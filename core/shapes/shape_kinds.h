@@ -10,10 +10,13 @@
 //   bool intersect(..., const Ray&, Interval, double& t)  // nearest t in range
 //   Vec3 outwardNormal(..., const Vec3& point)            // unit, geometric
 //   Aabb boundsOf(...)
+//   Vec2 uvAt(..., const Vec3& point)                     // surface coordinates
 //   SurfacePoint surfaceAt(..., const Vec3& point)        // optional: the
 //                                  default shades with the outward normal
-// (a kind that needs none of the ShapeArrays may provide intersect, normalAt
-// and boundsOf without them instead: see SelfContainedShape).
+// (a kind that needs none of the ShapeArrays may provide intersect, normalAt,
+// uvAt and boundsOf without them instead: see SelfContainedShape). A kind
+// that bounds a solid also lists every crossing of a ray (ClosedShape in
+// crossings.h), which CSG needs.
 // Adding a kind: its file, an entry at the end of ShapeKinds (the order is
 // the tie-break between coincident surfaces: existing scenes keep their
 // pictures), a reader handler and a writer overload (see docs/architecture.md).
@@ -36,13 +39,14 @@
 namespace prism {
 
 // Kinds that need none of the scene's arrays (spheres, ellipsoids, cones)
-// provide intersect(shape, ray, range, t), normalAt(shape, point) and
-// boundsOf(shape); these give them the interface.
+// provide intersect(shape, ray, range, t), normalAt(shape, point),
+// uvAt(shape, point) and boundsOf(shape); these give them the interface.
 template <class K>
 concept SelfContainedShape = requires(const K& shape, const Ray& ray, Interval range, double& t,
                                       const Vec3& point) {
   { intersect(shape, ray, range, t) } -> std::same_as<bool>;
   { normalAt(shape, point) } -> std::same_as<Vec3>;
+  { uvAt(shape, point) } -> std::same_as<Vec2>;
   { boundsOf(shape) } -> std::same_as<Aabb>;
 };
 template <SelfContainedShape K>
@@ -52,6 +56,9 @@ bool intersect(const K& shape, const ShapeArrays&, const Ray& ray, Interval rang
 template <SelfContainedShape K>
 Vec3 outwardNormal(const K& shape, const ShapeArrays&, const Vec3& point) {
   return normalAt(shape, point);
+}
+template <SelfContainedShape K> Vec2 uvAt(const K& shape, const ShapeArrays&, const Vec3& point) {
+  return uvAt(shape, point);
 }
 template <SelfContainedShape K> Aabb boundsOf(const K& shape, const ShapeArrays&) {
   return boundsOf(shape);
@@ -68,6 +75,7 @@ concept ShapeKind = requires(const K& shape, const ShapeArrays& arrays, const Ra
   { shape.origin } -> std::convertible_to<Origin>;
   { intersect(shape, arrays, ray, range, t) } -> std::same_as<bool>;
   { outwardNormal(shape, arrays, point) } -> std::same_as<Vec3>;
+  { uvAt(shape, arrays, point) } -> std::same_as<Vec2>;
   { boundsOf(shape, arrays) } -> std::same_as<Aabb>;
 };
 
@@ -102,11 +110,15 @@ inline const char* kindName(PrimitiveKind kind) { return ShapeKinds::names[std::
 inline bool isFlat(PrimitiveKind kind) { return ShapeKinds::flat[std::size_t(kind)]; }
 
 // The surface record of a kind without anything better: the outward normal
-// is also the shading normal, and rays start at the hit point.
+// is also the shading normal, rays start at the hit point, and there is one
+// part. (The material and the coordinates are filled in by Scene::surfaceAt.)
 template <class Kind>
 SurfacePoint surfaceAt(const Kind& shape, const ShapeArrays& arrays, const Vec3& point) {
-  const Vec3 n = outwardNormal(shape, arrays, point);
-  return {n, n, std::nullopt};
+  SurfacePoint s;
+  s.point = point;
+  s.outward = outwardNormal(shape, arrays, point);
+  s.shading = s.outward;
+  return s;
 }
 
 // One vector per kind.

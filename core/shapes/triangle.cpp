@@ -152,11 +152,24 @@ Aabb boundsOf(const Triangle& tri, const Vec3* vertices) {
 
 SurfacePoint surfaceAt(const Triangle& tri, const ShapeArrays& arrays, const Vec3& point) {
   const Vec3* vertices = arrays.meshVertices.data();
-  const Vec3 outward = geometricNormal(tri, vertices);
-  if (!tri.smooth()) return {outward, outward, std::nullopt};
+  SurfacePoint s;
+  s.point = point;
+  s.outward = geometricNormal(tri, vertices);
+  s.shading = s.outward;
+  if (!tri.smooth()) return s;
   const Vec3* normals = arrays.meshNormals.data();
-  return {outward, interpolatedNormal(tri, vertices, normals, point),
-          liftedPoint(tri, vertices, normals, point)};
+  s.shading = interpolatedNormal(tri, vertices, normals, point);
+  s.outwardStart = liftedPoint(tri, vertices, normals, point);
+  return s;
+}
+
+Vec2 uvAt(const Triangle& tri, const ShapeArrays& arrays, const Vec3& point) {
+  const Vec3& a = arrays.meshVertices[tri.vertex[0]];
+  const Vec3& b = arrays.meshVertices[tri.vertex[1]];
+  const Vec3& c = arrays.meshVertices[tri.vertex[2]];
+  double w[3];
+  if (!barycentric(a, b, c, glm::cross(b - a, c - a), point, w)) return Vec2(0.0);
+  return {w[1], w[2]};
 }
 
 } // namespace prism

@@ -79,5 +79,9 @@ inline Aabb boundsOf(const Triangle& tri, const ShapeArrays& arrays) {
 // The geometric normal; for a smooth triangle also the interpolated normal and
 // the lifted start of rays leaving its outward side.
 SurfacePoint surfaceAt(const Triangle& tri, const ShapeArrays& arrays, const Vec3& point);
+// The barycentric weights of the second and third vertices: the point is
+// a + u (b - a) + v (c - a). (Coordinates an OBJ file gives with `vt` will
+// replace them where a texture needs them.)
+Vec2 uvAt(const Triangle& tri, const ShapeArrays& arrays, const Vec3& point);
 
 } // namespace prism

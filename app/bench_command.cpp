@@ -2,6 +2,7 @@
 
 #include "bench_latency.h"
 #include "bench_measure.h"
+#include "cli_options.h"
 #include "load_scene.h"
 #include "render_command.h"
 
@@ -233,18 +234,12 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommandOptions& o) {
   cmd->add_option("--accel", o.accels, "Acceleration modes to measure [bvh groups none]")
       ->transform(CLI::CheckedTransformer(accelKindsByName(), CLI::ignore_case))
       ->delimiter(',');
-  cmd->add_option("--size", o.size, "Image size of the renders and eye rays (square)")
-      ->capture_default_str()
-      ->check(CLI::Range(8, 8192));
-  cmd->add_option("--depth", o.depth, "Maximum ray depth")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--thresh", o.thresh, "Antialiasing threshold")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--threads", o.threads, "The \"all threads\" count (0: every core)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
+  addRangedOption(*cmd, "--size", o.size, "Image size of the renders and eye rays (square)", 8,
+                  8192);
+  addRangedOption(*cmd, "--depth", o.depth, "Maximum ray depth", 1, 1000);
+  addRangedOption(*cmd, "--thresh", o.thresh, "Antialiasing threshold", 0.0, 1.0);
+  addRangedOption(*cmd, "--threads", o.threads, "The \"all threads\" count (0: every core)", 0,
+                  1024);
   cmd->add_option("--budget", o.budget,
                   "Seconds one throughput figure may take; slower ones are measured on an evenly "
                   "spread sample of the rays (marked ~)")

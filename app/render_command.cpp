@@ -1,5 +1,6 @@
 #include "render_command.h"
 
+#include "cli_options.h"
 #include "load_scene.h"
 #include "progress.h"
 
@@ -53,15 +54,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& o) {
   command
       .add_option("--depth", o.depth, "Maximum ray depth D >= 1 (1: ray casting with shadows) [5]")
       ->check(CLI::Range(1, 1000));
-  command.add_option("--thresh", o.thresh, "Antialiasing threshold in [0, 1]")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+  addRangedOption(command, "--thresh", o.thresh, "Antialiasing threshold in [0, 1]", 0.0, 1.0);
   command.add_option("--size", o.size, "Image size W H (overrides the scene's resolution)")
       ->expected(2)
       ->check(CLI::Range(1, 32768));
-  command.add_option("--threads", o.threads, "Render threads (0: all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
+  addRangedOption(command, "--threads", o.threads, "Render threads (0: all cores)", 0, 1024);
   command.add_flag("--jitter", o.jitter, "Jitter the 16 sub-samples within their cells");
   command
       .add_option("--accel", o.accel,
@@ -130,9 +127,7 @@ std::optional<std::string> applyCameraOptions(const RenderCommandOptions& o, Cam
 
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
   CLI::App* command = app.add_subcommand("render", "Render a scene to an image file, headless");
-  command->add_option("scene", o.scene, "Scene file (.sc, .nff or .obj)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addSceneArgument(*command, o.scene);
   command->add_option("-o,--output", o.output,
                       "Output image: .tif/.tiff (8-bit RGB), .png, .exr (float radiance), ...");
   addRenderSettingsOptions(*command, o);

@@ -1,5 +1,7 @@
 #include "view_command.h"
 
+#include "cli_options.h"
+
 #include "core/io/scene_loader.h"
 #include "core/render/parallel.h"
 #include "core/system/memory_budget.h"
@@ -74,9 +76,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
       "view", "Open the interactive previewer (the default: `prism SCENE`); without a display, "
               "render headless");
   RenderCommandOptions& r = o.render;
-  view->add_option("scene", r.scene, "Scene file (.sc, .nff or .obj)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addSceneArgument(*view, r.scene);
   view->add_option("-o,--output", r.output,
                    "Where Save writes (and the headless fallback) [SCENE-STEM.tiff]");
   addRenderSettingsOptions(*view, r);

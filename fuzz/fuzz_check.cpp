@@ -237,3 +237,11 @@ fs::path stageObj(std::string_view text) {
 }
 
 } // namespace prism::fuzz
+
+// Every target works in the sandbox: made once, before the first input, so
+// the time it takes is not charged to an input (libFuzzer calls this hook if
+// it is defined; this file is linked into every target).
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  prism::fuzz::sandbox();
+  return 0;
+}

@@ -8,11 +8,6 @@
 
 using namespace prism;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::sandbox();
-  return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text = fuzz::asText(data, size);
   if (fuzz::mtllibLeavesSandbox(text)) return -1; // not kept in the corpus

@@ -142,11 +142,6 @@ std::optional<Scene> load(std::string_view text) {
 
 } // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::sandbox();
-  return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view input = fuzz::asText(data, size);
   const std::optional<Scene> scene = load(input);

@@ -503,17 +503,9 @@ std::uint64_t Bvh::closestHits(std::span<const Ray> rays, std::span<Hit> hits) c
   return traverseBundle(rays, hits);
 }
 
-bool Bvh::closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit& hit) const {
-  return traverse<false>(ray, range, skip, &hit);
-}
-
-bool Bvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                 PrimitiveRef* blocker) const {
-  Hit hit;
-  const bool found = traverse<true>(ray, range, skip, blocker != nullptr ? &hit : nullptr);
-  if (found && blocker != nullptr) *blocker = hit.primitive;
-  return found;
-}
+// Every caller of closestHit and anyHit reaches the walk through these.
+template bool Bvh::traverse<false>(const Ray&, Interval, const PrimitiveRef*, Hit*) const;
+template bool Bvh::traverse<true>(const Ray&, Interval, const PrimitiveRef*, Hit*) const;
 
 std::size_t Bvh::memoryBytes() const {
   return nodes_.size() * sizeof(Node) + refs_.size() * sizeof(std::uint32_t);

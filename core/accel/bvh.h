@@ -8,7 +8,7 @@
 // skipped once they start beyond the nearest hit found.
 #pragma once
 
-#include "core/accel/accel.h"
+#include "core/accel/traversal_accel.h"
 
 #include <cstdint>
 #include <vector>
@@ -20,14 +20,10 @@ namespace prism {
 // one sign and no component so small (or zero) that its reciprocal is infinite.
 bool walksTogether(std::span<const Ray> rays);
 
-class Bvh final : public Accel {
+class Bvh final : public TraversalAccel<Bvh> {
 public:
   explicit Bvh(const Scene& scene);
 
-  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                  Hit& hit) const override;
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-              PrimitiveRef* blocker = nullptr) const override;
   // Eye rays through neighbouring pixels walk the tree together (see
   // core/accel/bvh.cpp); a bundle that does not start at one point, or whose
   // directions differ in sign or have a zero component, goes ray by ray.
@@ -53,6 +49,7 @@ public:
   static constexpr std::uint32_t kMaxLeaf = 16;
 
 private:
+  friend class TraversalAccel<Bvh>;
   struct BuildContext;
   std::uint32_t collapse(BuildContext& context, std::uint32_t binaryNode, int depth);
 

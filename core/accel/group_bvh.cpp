@@ -167,17 +167,8 @@ bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip
   return found;
 }
 
-bool GroupBvh::closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                          Hit& hit) const {
-  return traverse<false>(ray, range, skip, &hit);
-}
-
-bool GroupBvh::anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                      PrimitiveRef* blocker) const {
-  Hit hit;
-  const bool found = traverse<true>(ray, range, skip, blocker != nullptr ? &hit : nullptr);
-  if (found && blocker != nullptr) *blocker = hit.primitive;
-  return found;
-}
+// Every caller of closestHit and anyHit reaches the walk through these.
+template bool GroupBvh::traverse<false>(const Ray&, Interval, const PrimitiveRef*, Hit*) const;
+template bool GroupBvh::traverse<true>(const Ray&, Interval, const PrimitiveRef*, Hit*) const;
 
 } // namespace prism

@@ -3,20 +3,15 @@
 // gets a median-split binary tree over them, so a flat file is not a flat list.
 #pragma once
 
-#include "core/accel/accel.h"
+#include "core/accel/traversal_accel.h"
 
 #include <vector>
 
 namespace prism {
 
-class GroupBvh final : public Accel {
+class GroupBvh final : public TraversalAccel<GroupBvh> {
 public:
   explicit GroupBvh(const Scene& scene);
-
-  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                  Hit& hit) const override;
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-              PrimitiveRef* blocker = nullptr) const override;
 
   std::size_t memoryBytes() const override {
     return nodes_.size() * sizeof(Node) + children_.size() * sizeof(std::uint32_t) +
@@ -26,6 +21,7 @@ public:
   std::size_t nodeCount() const { return nodes_.size(); }
 
 private:
+  friend class TraversalAccel<GroupBvh>;
   // A node bounds its primitives prims_[primBegin, +primCount) and its children
   // children_[childBegin, +childCount) (indices into nodes_).
   struct Node {

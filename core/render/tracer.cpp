@@ -116,7 +116,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   const SurfacePoint surface =
       scene_.surfaceAt(hit.primitive, point,
                        record != nullptr ? SurfaceDetail::WithCoordinates : SurfaceDetail::Shading);
-  const Material m = scene_.materialAt(surface);
+  const Material& m = scene_.materialAt(surface);
   // Leaving iff N.D > 0; shade with the normal facing the ray.
   // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(surface.outward, ray.dir) > 0.0;
@@ -162,8 +162,9 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   return radiance;
 }
 
-Tracer::DirectLight Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m,
-                                           int depth, RayCounts& counts, RayTreeNode* record) {
+[[gnu::always_inline]] inline Tracer::DirectLight
+Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, int depth,
+                       RayCounts& counts, RayTreeNode* record) {
   Color diffuse(0.0), specular(0.0);
   // A material with kdr = ksr = 0 cannot reflect light, so no shadow ray could
   // change the result: none is traced (or counted).
@@ -208,8 +209,9 @@ Tracer::DirectLight Tracer::directLighting(const Ray& ray, const Incidence& at, 
           m.ksr * saturated(specular)};
 }
 
-Color Tracer::reflection(const Ray& ray, const Incidence& at, const Material& m, int depth,
-                         RayCounts& counts, RayTreeNode* record) {
+[[gnu::always_inline]] inline Color Tracer::reflection(const Ray& ray, const Incidence& at,
+                                                       const Material& m, int depth,
+                                                       RayCounts& counts, RayTreeNode* record) {
   if (!(depth < maxDepth_ && m.ksr > 0.0)) return Color(0.0);
   ++counts.reflected;
   RayTreeNode* child = nullptr;
@@ -221,8 +223,9 @@ Color Tracer::reflection(const Ray& ray, const Incidence& at, const Material& m,
   return m.ksr * trace(r, depth + 1, counts, child, at.skip);
 }
 
-Color Tracer::transmission(const Ray& ray, const Incidence& at, const Material& m, int depth,
-                           RayCounts& counts, RayTreeNode* record) {
+[[gnu::always_inline]] inline Color Tracer::transmission(const Ray& ray, const Incidence& at,
+                                                         const Material& m, int depth,
+                                                         RayCounts& counts, RayTreeNode* record) {
   if (!(depth < maxDepth_ && m.kst > 0.0)) return Color(0.0);
   // Entering a solid from air the index ratio is 1/ir; leaving it, ir.
   const double eta = at.leaving ? m.ir : 1.0 / m.ir;

@@ -70,9 +70,12 @@ struct Scene {
   SurfacePoint surfaceAt(PrimitiveRef ref, const Vec3& point,
                          SurfaceDetail detail = SurfaceDetail::Shading) const;
   // The material at a surface point: the one place shading looks it up. The
-  // values are constant per primitive today; textured materials will vary
-  // them with the point's coordinates here.
-  Material materialAt(const SurfacePoint& surface) const { return materials[surface.material]; }
+  // values are constant per primitive today, so this is a reference into the
+  // table; textured materials will vary them with the point's coordinates
+  // here (and return a value).
+  const Material& materialAt(const SurfacePoint& surface) const {
+    return materials[surface.material];
+  }
   // "sphere #3 (table.sc:12)" and the like, for diagnostics and the ray tree.
   std::string describe(PrimitiveRef ref) const;
   // Every primitive, in the order of the kinds, for brute-force queries.

@@ -1,0 +1,25 @@
+// Option shapes the commands share, so each command's option list reads as
+// a list of what it takes.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace prism {
+
+// An option whose value must lie in [min, max], its default shown in --help.
+template <class T, class Bound>
+CLI::Option* addRangedOption(CLI::App& command, const std::string& name, T& value,
+                             const std::string& help, Bound min, Bound max) {
+  return command.add_option(name, value, help)->capture_default_str()->check(CLI::Range(min, max));
+}
+
+// The scene file every rendering command takes first.
+inline CLI::Option* addSceneArgument(CLI::App& command, std::string& scene) {
+  return command.add_option("scene", scene, "Scene file (.sc, .nff or .obj)")
+      ->required()
+      ->check(CLI::ExistingFile);
+}
+
+} // namespace prism

@@ -6,15 +6,12 @@ squares and computing the solids' vertices. Deterministic, standard library only
     python3 tools/chex_gen.py
 """
 import math
-import os
 
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'chex.sc')
+from sc_text import num as f, point as P, polygon, scene_path
 
-def f(x):
-    s='%.6g'%x
-    return '0' if s in ('-0','0') else s
-def P(v): return ' '.join(f(c) for c in v)
-def poly(vs, ind): return ind+'polygon 4  '+'  '.join(P(v) for v in vs)+'\n'
+OUT = scene_path('chex.sc')
+
+poly = polygon
 ANG=30
 WHITE="surface 0.95 0.95 0.95  1 0 0  1 1"
 BLACK="surface 0.02 0.02 0.02  1 0 0  1 1"

@@ -6,15 +6,12 @@ squares and computing the solids' vertices. Deterministic, standard library only
     python3 tools/glass_gen.py
 """
 import math
-import os
 
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'glass.sc')
+from sc_text import num as f, point as P, polygon, scene_path
 
-def f(x):
-    s='%.6g'%x
-    return '0' if s in ('-0','0') else s
-def P(v): return ' '.join(f(c) for c in v)
-def poly(vs, ind='  '): return ind+'polygon %d  '%len(vs)+'  '.join(P(v) for v in vs)+'\n'
+OUT = scene_path('glass.sc')
+
+poly = polygon
 def cr(a,b): return [a[1]*b[2]-a[2]*b[1],a[2]*b[0]-a[0]*b[2],a[0]*b[1]-a[1]*b[0]]
 def volume(polys): return sum(sum(p[0][j]*cr(p[i],p[i+1])[j] for j in range(3))/6 for p in polys for i in range(1,len(p)-1))
 o=[]

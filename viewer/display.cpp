@@ -54,18 +54,27 @@ void main() {
 }
 )";
 
+// Throws with the driver's log when compiling a shader or linking a program
+// (`object`) failed `status`, deleting the object first. The three GL
+// functions are the shader's or the program's versions.
+template <class GetStatus, class GetLog, class Delete>
+void requireBuilt(GLuint object, GLenum status, GetStatus getStatus, GetLog getLog, Delete destroy,
+                  const char* failure) {
+  GLint ok = GL_FALSE;
+  getStatus(object, status, &ok);
+  if (ok) return;
+  char log[2048] = {};
+  getLog(object, sizeof log, nullptr, log);
+  destroy(object);
+  throw std::runtime_error(std::string("display shader ") + failure + ": " + log);
+}
+
 unsigned compile(GLenum type, const char* source) {
   const GLuint shader = glCreateShader(type);
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error(std::string("display shader does not compile: ") + log);
-  }
+  requireBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader,
+               "does not compile");
   return shader;
 }
 
@@ -97,14 +106,8 @@ ImageDisplay::ImageDisplay() {
   glLinkProgram(program_);
   glDeleteShader(vertex);
   glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-    glDeleteProgram(program_);
-    throw std::runtime_error(std::string("display shader does not link: ") + log);
-  }
+  requireBuilt(program_, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram,
+               "does not link");
   glGenVertexArrays(1, &vertexArray_);
   radianceTexture_ = makeTexture();
   maskTexture_ = makeTexture();

@@ -15,6 +15,7 @@
 #include "core/io/import_common.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/shape_kinds.h"
 #include "core/shapes/triangulate.h"
 
@@ -91,20 +92,14 @@ private:
   void finish();
 
   Origin origin(const Token& keyword) const { return {0, std::uint32_t(keyword.line)}; }
-  std::uint32_t material() {
-    if (!materialIndex_) materialIndex_ = materials_.intern(material_);
-    return *materialIndex_;
-  }
 
   std::string name_;
   Lexer lexer_;
   Scene scene_;
-  MaterialTable materials_{scene_};
+  SceneBuilder build_{scene_}; // the current material (`f`) too
   std::vector<Diagnostic> errors_, warnings_;
   std::size_t droppedWarnings_ = 0;
 
-  Material material_;
-  std::optional<std::uint32_t> materialIndex_;
   Token keyword_;             // of the command being read
   std::optional<Token> view_; // where `v` was given
   std::optional<Token> background_;
@@ -118,7 +113,7 @@ private:
 };
 
 Scene NffReader::run(std::vector<Diagnostic>* warnings) {
-  scene_.files.push_back(name_);
+  build_.addFile(name_);
   try {
     while (!lexer_.peek().atEnd())
       command(lexer_.next());
@@ -349,8 +344,7 @@ void NffReader::fill(const Token& keyword) {
     }
     ir = 1.0;
   }
-  material_ = Material{vec(a), a[3].value, a[4].value, a[6].value, a[5].value, ir};
-  materialIndex_.reset();
+  build_.setMaterial(Material{vec(a), a[3].value, a[4].value, a[6].value, a[5].value, ir});
 }
 
 // c: base centre and radius, apex centre and radius, open at both ends. NFF
@@ -381,11 +375,9 @@ void NffReader::cone(const Token& keyword) {
     report(keyword, outsideModelRangeMessage("c"));
     return;
   }
-  c.material = material();
+  c.material = build_.currentMaterial();
   c.origin = origin(keyword);
-  scene_.shapes<Cone>().push_back(c);
-  scene_.groups[0].primitives.push_back(
-      {kindOf<Cone>, std::uint32_t(scene_.shapes<Cone>().size() - 1)});
+  build_.add(c);
 }
 
 void NffReader::sphere(const Token& keyword) {
@@ -396,14 +388,12 @@ void NffReader::sphere(const Token& keyword) {
     report(a[3].token, "s: RADIUS must be positive, found " + quoted(a[3].token.text));
     return;
   }
-  const Sphere sphere{vec(a), a[3].value, material(), origin(keyword)};
+  const Sphere sphere{vec(a), a[3].value, build_.currentMaterial(), origin(keyword)};
   if (!withinModelRange(boundsOf(sphere))) {
     report(keyword, outsideModelRangeMessage("s"));
     return;
   }
-  scene_.shapes<Sphere>().push_back(sphere);
-  scene_.groups[0].primitives.push_back(
-      {kindOf<Sphere>, std::uint32_t(scene_.shapes<Sphere>().size() - 1)});
+  build_.add(sphere);
 }
 
 // p N, then N vertices: a flat polygon, exactly like the .sc `polygon`.
@@ -479,7 +469,7 @@ void NffReader::polygon(const Token& keyword, bool patch) {
       }
       return;
     }
-    addPolygon(scene_, points, material(), origin(keyword), 0);
+    build_.polygon(points, build_.currentMaterial(), origin(keyword));
     return;
   }
   const auto firstVertex = std::uint32_t(scene_.meshVertices.size());
@@ -493,7 +483,7 @@ void NffReader::polygon(const Token& keyword, bool patch) {
                                          firstVertex + tri[2]};
     const std::array<std::uint32_t, 3> n{firstNormal + tri[0], firstNormal + tri[1],
                                          firstNormal + tri[2]};
-    if (!addMeshTriangle(scene_, v, &n, material(), origin(keyword))) ++dropped;
+    if (!build_.meshTriangle(v, &n, build_.currentMaterial(), origin(keyword))) ++dropped;
   }
   // A patch of zero area is not simple either; it is reported as dropped.
   if (!triangulation.simple && dropped < triangulation.triangles.size())
@@ -546,7 +536,7 @@ void NffReader::finish() {
                         "1/r^2 compensation) is too large for a double");
       continue;
     }
-    scene_.lights.push_back({l.position, intensity});
+    build_.addLight({l.position, intensity});
   }
 }
 

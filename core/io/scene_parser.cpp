@@ -9,6 +9,7 @@
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/shape_kinds.h"
 #include "core/shapes/triangle.h"
@@ -103,32 +104,6 @@ template <int N> bool allFinite(const glm::mat<N, N, double>& m) {
   return true;
 }
 
-using MaterialKey = std::array<double, 8>;
-
-MaterialKey keyOf(const Material& m) {
-  return {m.color.r, m.color.g, m.color.b, m.kdr, m.ksr, m.kst, m.e, m.ir};
-}
-
-// Agrees with the == of MaterialKey, which takes -0 and 0 as equal.
-struct MaterialKeyHash {
-  std::size_t operator()(const MaterialKey& key) const {
-    std::uint64_t h = 0;
-    for (const double v : key) {
-      std::uint64_t bits = 0;
-      const double positiveZero = v + 0.0; // -0 + 0 is +0
-      std::memcpy(&bits, &positiveZero, sizeof bits);
-      h = mix(h ^ bits);
-    }
-    return std::size_t(h);
-  }
-  // The splitmix64 finaliser: every input bit affects every output bit.
-  static std::uint64_t mix(std::uint64_t x) {
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  }
-};
-
 class Parser {
 public:
   Scene run(std::string_view text, const std::string& name);
@@ -151,12 +126,10 @@ private:
     std::size_t savedAtEntry = 0; // saved_.size() when the file began
   };
 
-  // What `push` saves and `pop` restores.
+  // What `push` saves and `pop` restores, besides the group and material
+  // the builder saves.
   struct Saved {
-    Material material;
-    std::optional<std::uint32_t> materialIndex;
     Transform transform;
-    std::uint32_t group = 0;
     Location pushedAt;
   };
 
@@ -220,8 +193,6 @@ private:
   // State.
   SourceFile& file() { return *files_.back(); }
   Origin origin(const Command& c) { return {file().index, std::uint32_t(c.keyword.line)}; }
-  std::uint32_t currentMaterial();
-  void addPrimitive(PrimitiveKind kind, std::size_t index);
   void compose(Command& c, const Transform& t);
   std::optional<std::string> readInclude(const fs::path& path, const fs::path& identity,
                                          const std::string*& text);
@@ -234,14 +205,11 @@ private:
   const ResolvedInclude& resolveInclude(std::string_view raw);
 
   Scene scene_;
+  SceneBuilder build_{scene_}; // the current material and group too
   std::vector<Diagnostic> diagnostics_;
 
-  Material material_;
-  std::optional<std::uint32_t> materialIndex_; // material_ interned, once a primitive used it
-  std::unordered_map<MaterialKey, std::uint32_t, MaterialKeyHash> materialIds_;
   Transform transform_;
-  std::uint32_t group_ = 0;
-  std::vector<Saved> saved_;
+  std::vector<Saved> saved_; // in step with build_'s pushes
 
   std::vector<std::unique_ptr<SourceFile>> files_;            // the include stack, main file first
   std::map<fs::path, std::string> contents_;                  // every included file, read once
@@ -338,12 +306,10 @@ void Parser::closeOpenPushes() {
   for (std::size_t i = base; i < saved_.size(); ++i) {
     report(saved_[i].pushedAt, "push without matching pop");
   }
-  const Saved& outer = saved_[base];
-  material_ = outer.material;
-  materialIndex_ = outer.materialIndex;
-  transform_ = outer.transform;
-  group_ = outer.group;
+  transform_ = saved_[base].transform;
   saved_.resize(base);
+  while (build_.openPushes() > base)
+    build_.pop();
 }
 
 void Parser::report(Location at, std::string message) {
@@ -491,7 +457,7 @@ void Parser::light(Command& c) {
     error(c.keyword, outsideModelRangeMessage("light"));
     return;
   }
-  scene_.lights.push_back({position, vec(a + 3)});
+  build_.addLight({position, vec(a + 3)});
 }
 
 void Parser::surface(Command& c) {
@@ -505,26 +471,11 @@ void Parser::surface(Command& c) {
     invalid(c, a[7].token, "IR must be positive, found " + quoted(a[7].token.text));
   }
   if (!c.valid) return;
-  material_ = Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value};
-  materialIndex_.reset();
+  build_.setMaterial(Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value});
 }
 
 // ---------------------------------------------------------------------------
 // Primitives
-
-// Interns the current material on first use: identical materials share one entry.
-std::uint32_t Parser::currentMaterial() {
-  if (materialIndex_) return *materialIndex_;
-  const auto [it, inserted] =
-      materialIds_.try_emplace(keyOf(material_), std::uint32_t(scene_.materials.size()));
-  if (inserted) scene_.materials.push_back(material_);
-  materialIndex_ = it->second;
-  return it->second;
-}
-
-void Parser::addPrimitive(PrimitiveKind kind, std::size_t index) {
-  scene_.groups[group_].primitives.push_back({kind, std::uint32_t(index)});
-}
 
 void Parser::sphere(Command& c) {
   Arg a[4];
@@ -542,13 +493,12 @@ void Parser::sphere(Command& c) {
       error(c.keyword, "sphere: too small after the current transform");
       return;
     }
-    const Sphere sphere{center, radius, currentMaterial(), origin(c)};
+    const Sphere sphere{center, radius, build_.currentMaterial(), origin(c)};
     if (!withinModelRange(boundsOf(sphere))) {
       error(c.keyword, outsideModelRangeMessage("sphere"));
       return;
     }
-    scene_.shapes<Sphere>().push_back(sphere);
-    addPrimitive(kindOf<Sphere>, scene_.shapes<Sphere>().size() - 1);
+    build_.add(sphere);
     return;
   }
   // A non-uniform scale makes it the image of the unit sphere under x -> L (r x) + center.
@@ -570,10 +520,9 @@ void Parser::sphere(Command& c) {
     error(c.keyword, tooUnevenMessage("sphere"));
     return;
   }
-  e.material = currentMaterial();
+  e.material = build_.currentMaterial();
   e.origin = origin(c);
-  scene_.shapes<Ellipsoid>().push_back(e);
-  addPrimitive(kindOf<Ellipsoid>, scene_.shapes<Ellipsoid>().size() - 1);
+  build_.add(e);
 }
 
 void Parser::polygon(Command& c) {
@@ -632,7 +581,7 @@ void Parser::polygon(Command& c) {
     error(c.keyword, "polygon: " + *problem);
     return;
   }
-  addPolygon(scene_, vertices_, currentMaterial(), origin(c), group_);
+  build_.polygon(vertices_, build_.currentMaterial(), origin(c));
 }
 
 void Parser::cone(Command& c) {
@@ -664,10 +613,9 @@ void Parser::cone(Command& c) {
     error(c.keyword, tooUnevenMessage("cone"));
     return;
   }
-  cone.material = currentMaterial();
+  cone.material = build_.currentMaterial();
   cone.origin = origin(c);
-  scene_.shapes<Cone>().push_back(cone);
-  addPrimitive(kindOf<Cone>, scene_.shapes<Cone>().size() - 1);
+  build_.add(cone);
 }
 
 void Parser::triangle(Command& c) {
@@ -728,19 +676,7 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
     error(c.keyword, c.name + ": " + *problem);
     return;
   }
-  Triangle t;
-  for (int i = 0; i < 3; ++i) {
-    t.vertex[std::size_t(i)] = std::uint32_t(scene_.meshVertices.size());
-    scene_.meshVertices.push_back(v[i]);
-    if (normals != nullptr) {
-      t.normal[std::size_t(i)] = std::uint32_t(scene_.meshNormals.size());
-      scene_.meshNormals.push_back(n[i]);
-    }
-  }
-  t.material = currentMaterial();
-  t.origin = origin(c);
-  scene_.shapes<Triangle>().push_back(t);
-  addPrimitive(kindOf<Triangle>, scene_.shapes<Triangle>().size() - 1);
+  build_.triangle(v, normals != nullptr ? &n : nullptr, build_.currentMaterial(), origin(c));
 }
 
 // ---------------------------------------------------------------------------
@@ -752,14 +688,8 @@ void Parser::push(Command& c) {
     error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
     throw StopParsing{};
   }
-  saved_.push_back({material_, materialIndex_, transform_, group_,
-                    Location{file().name, c.keyword.line, c.keyword.column}});
-  const auto child = std::uint32_t(scene_.groups.size());
-  Group group;
-  group.origin = origin(c);
-  scene_.groups.push_back(std::move(group));
-  scene_.groups[group_].children.push_back(child);
-  group_ = child;
+  saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column}});
+  build_.push(origin(c));
 }
 
 void Parser::pop(Command& c) {
@@ -769,12 +699,9 @@ void Parser::pop(Command& c) {
                                       "must balance within each file)");
     return;
   }
-  const Saved& s = saved_.back();
-  material_ = s.material;
-  materialIndex_ = s.materialIndex;
-  transform_ = s.transform;
-  group_ = s.group;
+  transform_ = saved_.back().transform;
   saved_.pop_back();
+  build_.pop();
 }
 
 // Composes `t` onto the current transform unless the result is no longer usable
@@ -824,7 +751,7 @@ void Parser::rotate(Command& c) {
 std::uint32_t Parser::fileIndex(const fs::path& identity, const std::string& name) {
   const auto [it, inserted] =
       fileIndices_.try_emplace(identity, std::uint32_t(scene_.files.size()));
-  if (inserted) scene_.files.push_back(name);
+  if (inserted) build_.addFile(name);
   return it->second;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/io/import_common.h"
 #include "core/io/obj_scan.h"
+#include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
 #include "core/scene/scene_builder.h"
@@ -370,10 +371,7 @@ Material materialFromMtl(const MtlValues& mtl) {
 
 Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnings) {
   const std::string name = path.string();
-  std::string text;
-  if (const std::optional<std::string> problem = readFile(path, false, text, kMaxObjBytes)) {
-    throw SceneError({Diagnostic{name, 1, 1, "cannot read file: " + *problem}});
-  }
+  std::string text = readSceneText(path, kMaxObjBytes);
   ObjScan scan = scanObj(text, name, path.parent_path());
   if (!scan.errors.empty()) throw SceneError(std::move(scan.errors));
   normaliseObjForTinyObj(text);

@@ -6,6 +6,7 @@
 // parsing continues so that one run reports every problem (up to a cap).
 #include "core/io/scene_parser.h"
 
+#include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
@@ -17,12 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cerrno>
-#include <charconv>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -37,7 +33,6 @@ namespace {
 // ---------------------------------------------------------------------------
 // Limits that keep hostile input from exhausting time or memory.
 
-constexpr std::size_t kMaxDiagnostics = 50;
 constexpr std::size_t kMaxIncludeDepth = 64; // files open at once, the main file included
 // kMaxSceneBytes (core/io/scene_text.h) bounds the text parsed, counting every
 // inclusion of a file: a few lines that include a file twice, which includes
@@ -45,8 +40,6 @@ constexpr std::size_t kMaxIncludeDepth = 64; // files open at once, the main fil
 // single file read.
 constexpr const char* kMaxSceneBytesText = "256 MiB";
 constexpr int kMinResolution = 1;
-constexpr int kMaxResolution = 32768;
-constexpr std::uint64_t kMaxPolygonVertices = std::numeric_limits<std::uint32_t>::max();
 // Groups open at once. Each costs a saved material and transform (about 400
 // bytes), so without a limit a file of nothing but `push` would need 80 times
 // its size in memory.
@@ -54,35 +47,6 @@ constexpr std::size_t kMaxGroupDepth = 100000;
 
 // ---------------------------------------------------------------------------
 // Parser
-
-// Unwinds the parse once the diagnostic cap is reached, or after an error
-// that would bury the rest under follow-up errors.
-struct StopParsing {};
-
-struct Location {
-  std::string file;
-  int line = 1;
-  int column = 1;
-
-  std::string text() const {
-    return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-  }
-};
-
-// A numeric argument and the token it was read from (for messages).
-struct Arg {
-  double value = 0.0;
-  Token token;
-};
-
-// One command being parsed.
-struct Command {
-  Token keyword;
-  std::string name;  // the keyword, for messages
-  bool valid = true; // false once an argument broke a constraint: not applied
-};
-
-Vec3 vec(const Arg* a) { return Vec3(a[0].value, a[1].value, a[2].value); }
 
 // True when the transform turns space inside out, so counterclockwise vertex order
 // becomes clockwise. The sign of the determinant of the unit-length columns: the
@@ -104,7 +68,7 @@ template <int N> bool allFinite(const glm::mat<N, N, double>& m) {
   return true;
 }
 
-class Parser {
+class Parser : public ReaderBase {
 public:
   Scene run(std::string_view text, const std::string& name);
 
@@ -139,31 +103,7 @@ private:
   void closeOpenPushes();
   void checkCamera();
 
-  // Diagnostics and recovery.
-  void report(Location at, std::string message);
-  void error(const Token& at, std::string message) {
-    report({file().name, at.line, at.column}, std::move(message));
-  }
-  void invalid(Command& c, const Token& at, const std::string& message) {
-    c.valid = false;
-    error(at, c.name + ": " + message);
-  }
-  void resync();
-  void skipNumbers();
-
-  // Arguments. Each returns false when the argument is missing (already reported
-  // and the input resynchronised); the command must then stop reading.
-  bool argumentToken(Command& c, const char* name, const char* kind, Token& out);
-  bool number(Command& c, const char* name, Arg& out);
-  template <std::size_t N> bool numbers(Command& c, const char* const (&names)[N], Arg (&out)[N]) {
-    for (std::size_t i = 0; i < N; ++i) {
-      if (!number(c, names[i], out[i])) return false;
-    }
-    return true;
-  }
-  void requireNonNegative(Command& c, const Arg& a, const char* name);
-  void requireColor(Command& c, const Arg* rgb);
-  bool once(Command& c);
+  bool startsCommand(std::string_view word) const override { return handlerFor(word) != nullptr; }
 
   // Commands.
   void eye(Command& c) { cameraPoint(c, scene_.camera.eye, true); }
@@ -206,7 +146,6 @@ private:
 
   Scene scene_;
   SceneBuilder build_{scene_}; // the current material and group too
-  std::vector<Diagnostic> diagnostics_;
 
   Transform transform_;
   std::vector<Saved> saved_; // in step with build_'s pushes
@@ -217,7 +156,6 @@ private:
   std::map<fs::path, std::uint32_t> fileIndices_;
   std::size_t parsedBytes_ = 0;
 
-  std::map<std::string, Location> firstGiven_; // commands allowed once, by name
   bool cameraBroken_ = false;  // an eye/lookat/up was rejected: skip the camera checks
   std::vector<Vec3> vertices_; // scratch for polygon
 };
@@ -254,13 +192,11 @@ Parser::Handler Parser::handlerFor(std::string_view name) {
 
 Scene Parser::run(std::string_view text, const std::string& name) {
   const fs::path identity = identityOf(name);
-  try {
+  readAll([&] {
     parsedBytes_ = text.size();
     parseFile(text, name, identity, fileIndex(identity, name));
     checkCamera();
-  } catch (const StopParsing&) {
-  }
-  if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
+  });
   return std::move(scene_);
 }
 
@@ -268,11 +204,13 @@ void Parser::parseFile(std::string_view text, const std::string& name, const fs:
                        std::uint32_t index) {
   files_.push_back(
       std::make_unique<SourceFile>(SourceFile{name, identity, index, Lexer(text), saved_.size()}));
+  readFrom(file().lexer, file().name);
   while (!file().lexer.peek().atEnd()) {
     command();
   }
   closeOpenPushes();
   files_.pop_back();
+  if (!files_.empty()) readFrom(file().lexer, file().name);
 }
 
 void Parser::command() {
@@ -312,82 +250,6 @@ void Parser::closeOpenPushes() {
     build_.pop();
 }
 
-void Parser::report(Location at, std::string message) {
-  if (diagnostics_.size() >= kMaxDiagnostics) {
-    diagnostics_.push_back({std::move(at.file), at.line, at.column, "too many errors; giving up"});
-    throw StopParsing{};
-  }
-  diagnostics_.push_back({std::move(at.file), at.line, at.column, std::move(message)});
-}
-
-// After a missing or malformed argument: drop the offending token unless it starts
-// the next command, then the numbers that belonged to the broken command.
-void Parser::resync() {
-  const Token& token = file().lexer.peek();
-  if (!token.atEnd() && handlerFor(token.text) == nullptr) file().lexer.next();
-  skipNumbers();
-}
-
-void Parser::skipNumbers() {
-  Lexer& lexer = file().lexer;
-  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text)) {
-    lexer.next();
-  }
-}
-
-// ---------------------------------------------------------------------------
-// Arguments
-
-bool Parser::argumentToken(Command& c, const char* name, const char* kind, Token& out) {
-  out = file().lexer.peek();
-  if (out.atEnd()) {
-    error(c.keyword, c.name + ": expected " + name + " but reached the end of the file");
-    return false;
-  }
-  if (!isNumber(out.text)) {
-    error(out, c.name + ": expected " + name + " (" + kind + ") but found " + quoted(out.text));
-    resync();
-    return false;
-  }
-  file().lexer.next();
-  return true;
-}
-
-bool Parser::number(Command& c, const char* name, Arg& out) {
-  if (!argumentToken(c, name, "a number", out.token)) return false;
-  if (parseNumber(out.token.text, out.value) == NumberKind::NonFinite) {
-    invalid(c, out.token,
-            std::string(name) + " is not a finite number (" + quoted(out.token.text) + ")");
-    // NaN fails every later range check silently: one message per bad argument.
-    out.value = std::numeric_limits<double>::quiet_NaN();
-  }
-  return true;
-}
-
-void Parser::requireNonNegative(Command& c, const Arg& a, const char* name) {
-  if (a.value < 0.0) {
-    invalid(c, a.token, std::string(name) + " must not be negative, found " + quoted(a.token.text));
-  }
-}
-
-void Parser::requireColor(Command& c, const Arg* rgb) {
-  static constexpr const char* kNames[] = {"R", "G", "B"};
-  for (int i = 0; i < 3; ++i) {
-    requireNonNegative(c, rgb[i], kNames[i]);
-  }
-}
-
-// Camera and image commands may be given once in the whole scene.
-bool Parser::once(Command& c) {
-  const Location here{file().name, c.keyword.line, c.keyword.column};
-  const auto [first, inserted] = firstGiven_.try_emplace(c.name, here);
-  if (!inserted) {
-    c.valid = false;
-    error(c.keyword, "duplicate '" + c.name + "' (first given at " + first->second.text() + ")");
-  }
-  return inserted;
-}
-
 // ---------------------------------------------------------------------------
 // Camera and global commands
 
@@ -421,18 +283,9 @@ void Parser::resolution(Command& c) {
   int size[2] = {0, 0};
   static constexpr const char* kNames[] = {"W", "H"};
   for (int i = 0; i < 2; ++i) {
-    Token token;
-    if (!argumentToken(c, kNames[i], "an integer", token)) return;
-    const std::optional<std::uint64_t> value = parseInteger(token.text);
-    if (!value || *value < std::uint64_t(kMinResolution) ||
-        *value > std::uint64_t(kMaxResolution)) {
-      invalid(c, token,
-              std::string(kNames[i]) + " must be an integer from " +
-                  std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) +
-                  ", found " + quoted(token.text));
-    } else {
-      size[i] = int(*value);
-    }
+    std::optional<std::uint64_t> value;
+    if (!integer(c, kNames[i], kMinResolution, kMaxResolution, value)) return;
+    if (value) size[i] = int(*value);
   }
   if (!c.valid) return;
   scene_.width = size[0];
@@ -526,48 +379,16 @@ void Parser::sphere(Command& c) {
 }
 
 void Parser::polygon(Command& c) {
-  Token countToken;
-  if (!argumentToken(c, "N", "an integer", countToken)) return;
-  const std::optional<std::uint64_t> count = parseInteger(countToken.text);
-  if (!count || *count < 3 || *count > kMaxPolygonVertices) {
-    error(countToken, "polygon: N must be an integer from 3 to " +
-                          std::to_string(kMaxPolygonVertices) + ", found " +
-                          quoted(countToken.text));
-    skipNumbers();
-    return;
-  }
-  // Vertices are read as they come, never reserved from N: a hostile N costs
-  // nothing until the numbers are actually there.
-  const std::uint64_t wanted = 3 * *count;
+  const std::optional<std::uint64_t> count = vertexCount(c);
+  if (!count) return;
   vertices_.clear();
   Vec3 vertex(0.0);
-  for (std::uint64_t found = 0; found < wanted; ++found) {
-    Lexer& lexer = file().lexer;
-    const Token token = lexer.peek();
-    double value = 0.0;
-    const NumberKind kind = token.atEnd() ? NumberKind::NotANumber : parseNumber(token.text, value);
-    if (kind == NumberKind::NotANumber) {
-      const std::string expected = "polygon: expected " + std::to_string(wanted) + " numbers for " +
-                                   std::to_string(*count) + " vertices, found " +
-                                   std::to_string(found);
-      if (token.atEnd()) {
-        error(c.keyword, expected + " before the end of the file");
-      } else {
-        error(token, expected + " before " + quoted(token.text));
-        resync();
-      }
-      return;
-    }
-    lexer.next();
+  const auto take = [&](std::uint64_t found, double value, const Token&) {
     const int axis = int(found % 3);
-    if (kind == NumberKind::NonFinite) {
-      const std::string name = std::string(1, "XYZ"[axis]) + std::to_string(found / 3 + 1);
-      invalid(c, token, name + " is not a finite number (" + quoted(token.text) + ")");
-    }
     vertex[axis] = value;
     if (axis == 2) vertices_.push_back(transform_.point(vertex));
-  }
-  if (!c.valid) return;
+  };
+  if (!vertexNumbers(c, *count, 3, take) || !c.valid) return;
   // A mirroring transform would turn the counterclockwise order, and with it the
   // outward normal, inside out.
   if (mirrors(transform_)) std::reverse(vertices_.begin(), vertices_.end());
@@ -686,7 +507,7 @@ void Parser::push(Command& c) {
   if (saved_.size() >= kMaxGroupDepth) {
     // Every later pop would be reported as unmatched: stop here.
     error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
-    throw StopParsing{};
+    throw StopReading{};
   }
   saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column}});
   build_.push(origin(c));
@@ -849,10 +670,7 @@ void Parser::include(Command& c) {
 void Parser::checkCamera() {
   if (cameraBroken_) return;
   const Location mainStart{scene_.files[0], 1, 1};
-  const auto given = [&](const char* name) -> const Location* {
-    const auto it = firstGiven_.find(name);
-    return it == firstGiven_.end() ? nullptr : &it->second;
-  };
+  const auto given = [&](const char* name) { return firstGiven(name); };
   const Location* view = given("lookat") ? given("lookat") : given("eye");
   const Location& viewAt = view ? *view : mainStart;
   const Location& upAt = given("up") ? *given("up") : viewAt;
@@ -893,12 +711,7 @@ Scene parseScene(std::string_view text, const std::string& name) {
 }
 
 Scene loadScene(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::string text;
-  if (const std::optional<std::string> problem = readFile(path, false, text)) {
-    throw SceneError({Diagnostic{name, 1, 1, "cannot read file: " + *problem}});
-  }
-  return parseScene(text, name);
+  return parseScene(readSceneText(path), path.string());
 }
 
 } // namespace prism

@@ -3,7 +3,9 @@
 // A hand-written lexer over the whole file text and a recursive-descent parser,
 // one small member function per command. Errors never stop the parse early: each
 // is recorded with its position, the rest of the broken command is skipped, and
-// parsing continues so that one run reports every problem (up to a cap).
+// parsing continues so that one run reports every problem (up to a cap). How
+// arguments are read and errors reported is shared with the NFF reader
+// (ReaderBase); what a command adds goes through the SceneBuilder.
 #include "core/io/scene_parser.h"
 
 #include "core/io/reader_base.h"

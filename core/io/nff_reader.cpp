@@ -369,22 +369,17 @@ void NffReader::finish() {
   if (!view_) warn(start, "no view ('v'): using the default camera of .sc scenes");
   const CameraSpec& camera = scene_.camera;
   const Token& at = view_ ? *view_ : start;
-  const Vec3 direction = camera.lookat - camera.eye;
-  const Vec3 forward = glm::normalize(direction);
-  if (direction == Vec3(0.0) || !isFinite(forward)) {
-    error(at, "v: 'from' and 'at' must be distinct points");
-    return;
-  }
-  const double upLength = maxAbsComponent(camera.up);
-  if (upLength == 0.0) {
-    error(at, "v: 'up' must not be the zero vector");
-    return;
-  }
-  const Vec3 unitUp = glm::normalize(camera.up / upLength);
-  if (glm::length(glm::cross(forward, unitUp)) < 1e-9) {
+  switch (cameraProblem(camera)) {
+  case CameraProblem::SamePoint:
+  case CameraProblem::NoDirection: error(at, "v: 'from' and 'at' must be distinct points"); return;
+  case CameraProblem::ZeroUp: error(at, "v: 'up' must not be the zero vector"); return;
+  case CameraProblem::ParallelUp:
     error(at, "v: 'up' is parallel to the view direction (from 'from' to 'at')");
     return;
+  case CameraProblem::ShortUp: // never an error in NFF files: kept so
+  case CameraProblem::None: break;
   }
+  const Vec3 direction = camera.lookat - camera.eye;
   // NFF's angle spans the centres of the top and bottom pixel rows; Prism's
   // fov spans the image's edges, half a pixel further out on each side.
   if (angle_ > 0.0) {

@@ -677,32 +677,20 @@ void Parser::checkCamera() {
   const Location& viewAt = view ? *view : mainStart;
   const Location& upAt = given("up") ? *given("up") : viewAt;
 
-  // The same computation as Camera's constructor, so that it cannot produce NaN.
-  const CameraSpec& camera = scene_.camera;
-  const Vec3 direction = camera.lookat - camera.eye;
-  if (direction == Vec3(0.0)) {
+  switch (cameraProblem(scene_.camera)) {
+  case CameraProblem::None: return;
+  case CameraProblem::SamePoint:
     report(viewAt, "eye and lookat are the same point, so there is no view direction");
     return;
-  }
-  const Vec3 forward = glm::normalize(direction);
-  if (!isFinite(forward)) {
+  case CameraProblem::NoDirection:
     report(viewAt, "eye and lookat are too close together or too far apart to give a view "
                    "direction");
     return;
-  }
-  if (camera.up == Vec3(0.0)) {
-    report(upAt, "up must not be the zero vector");
-    return;
-  }
-  // The sine of the angle between up and the view direction; 1e-9 catches what is
-  // parallel up to round-off. (Scaled before normalising so that it cannot underflow.)
-  const Vec3 unitUp = glm::normalize(camera.up / maxAbsComponent(camera.up));
-  if (glm::length(glm::cross(forward, unitUp)) < 1e-9) {
+  case CameraProblem::ZeroUp: report(upAt, "up must not be the zero vector"); return;
+  case CameraProblem::ParallelUp:
     report(upAt, "up is parallel to the view direction (from eye to lookat)");
     return;
-  }
-  if (!isFinite(glm::normalize(glm::cross(forward, camera.up)))) {
-    report(upAt, "up is too short to give a direction");
+  case CameraProblem::ShortUp: report(upAt, "up is too short to give a direction"); return;
   }
 }
 

@@ -2,6 +2,7 @@
 // radiance is known exactly: the supersampling decision, sub-sample placement, avgmax, exposure.
 #include "core/render/exposure.h"
 #include "core/render/image_formation.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/shape_kinds.h"
 
 #include <gtest/gtest.h>
@@ -113,13 +114,9 @@ struct HalfPlaneScene {
   explicit HalfPlaneScene(double edge) {
     scene.camera = {Vec3(0, 0, 1), Vec3(0, 0, 0), Vec3(0, 1, 0), 90.0};
     scene.ambient = Color(1.0);
-    scene.materials.push_back(Material{});
+    SceneBuilder build(scene);
     const std::vector<Vec3> quad{{edge, -10, 0}, {10, -10, 0}, {10, 10, 0}, {edge, 10, 0}};
-    Polygon p = makePolygon(quad);
-    p.firstVertex = 0;
-    scene.polygonVertices = quad;
-    scene.shapes<Polygon>().push_back(p);
-    scene.groups[0].primitives.push_back({kindOf<Polygon>, 0});
+    build.polygon(quad, build.material(Material{}), Origin{});
     accel = makeAccel(scene, AccelKind::None);
   }
   Scene scene;

@@ -5,6 +5,7 @@
 // full test took O(n) per ray, against the disc it approximates.
 #include "core/accel/accel.h"
 #include "core/scene/scene.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/shape_kinds.h"
 
 #include <gtest/gtest.h>
@@ -41,9 +42,9 @@ template <class Target>
 int expectSameAsEveryEdge(const std::vector<glm::dvec2>& points, int orientation, int rays,
                           Target target, std::mt19937& rng) {
   Scene scene;
-  scene.materials.push_back(Material{});
+  SceneBuilder build(scene);
   const std::vector<Vec3> vertices = placed(points, orientation);
-  const PrimitiveRef ref = addPolygon(scene, vertices, 0, Origin{}, 0);
+  const PrimitiveRef ref = build.polygon(vertices, build.material(Material{}), Origin{});
   const Polygon& p = scene.shapes<Polygon>()[ref.index];
   EXPECT_NE(p.edgeIndex, Polygon::kNoEdgeIndex);
   const PolygonEdgeIndex& index = scene.polygonEdgeIndices.at(p.edgeIndex);
@@ -195,8 +196,8 @@ TEST(PolygonEdges, AMillionVertexPolygonIsTheDiscItApproximates) {
     vertices.emplace_back(std::cos(a), std::sin(a), 0.0);
   }
   Scene scene;
-  scene.materials.push_back(Material{});
-  addPolygon(scene, vertices, 0, Origin{}, 0);
+  SceneBuilder build(scene);
+  build.polygon(vertices, build.material(Material{}), Origin{});
   ASSERT_EQ(scene.polygonEdgeIndices.size(), 1u);
   EXPECT_LT(scene.polygonEdgeIndices[0].memoryBytes(), std::size_t(n) * 64);
   const double inscribed = std::cos(kPi / n);

@@ -1,9 +1,12 @@
 // Helpers that build prism::Scene objects in code, without the scene parser, for
-// the geometry and physics tests. Every add* function appends one item to the
-// scene and returns how to refer to it.
+// the geometry and physics tests: thin wrappers over the core's SceneBuilder
+// (so tests build scenes as the readers do) that take the group explicitly.
+// Every add* function appends one item to the scene and returns how to refer
+// to it.
 #pragma once
 
 #include "core/scene/scene.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/shape_kinds.h"
 
 #include <cstdint>
@@ -13,9 +16,9 @@
 
 namespace prism::test {
 
+// Through the material table: an identical material already there is reused.
 inline std::uint32_t addMaterial(Scene& scene, const Material& m) {
-  scene.materials.push_back(m);
-  return std::uint32_t(scene.materials.size() - 1);
+  return SceneBuilder(scene).material(m);
 }
 
 // A plain diffuse material with colour `c` and diffuse coefficient `kdr`.
@@ -28,10 +31,14 @@ inline Material diffuse(const Color& c, double kdr) {
 
 // A new, empty push/pop group below `parent`; returns its index.
 inline std::uint32_t addGroup(Scene& scene, std::uint32_t parent = 0) {
-  scene.groups.emplace_back();
-  const auto index = std::uint32_t(scene.groups.size() - 1);
-  scene.groups[parent].children.push_back(index);
-  return index;
+  return SceneBuilder(scene).addGroup(parent);
+}
+
+// Calls add with a builder over `scene` whose primitives go to `group`.
+template <class Add> PrimitiveRef addIn(Scene& scene, std::uint32_t group, const Add& add) {
+  SceneBuilder build(scene);
+  build.enter(group);
+  return add(build);
 }
 
 inline PrimitiveRef addSphere(Scene& scene, const Vec3& center, double radius,
@@ -40,10 +47,7 @@ inline PrimitiveRef addSphere(Scene& scene, const Vec3& center, double radius,
   s.center = center;
   s.radius = radius;
   s.material = material;
-  scene.shapes<Sphere>().push_back(s);
-  const PrimitiveRef ref{kindOf<Sphere>, std::uint32_t(scene.shapes<Sphere>().size() - 1)};
-  scene.groups[group].primitives.push_back(ref);
-  return ref;
+  return addIn(scene, group, [&](SceneBuilder& build) { return build.add(s); });
 }
 
 // The unit sphere under x -> linear * x + offset.
@@ -51,10 +55,7 @@ inline PrimitiveRef addEllipsoid(Scene& scene, const Mat3& linear, const Vec3& o
                                  std::uint32_t material, std::uint32_t group = 0) {
   Ellipsoid e = makeEllipsoid(linear, offset);
   e.material = material;
-  scene.shapes<Ellipsoid>().push_back(e);
-  const PrimitiveRef ref{kindOf<Ellipsoid>, std::uint32_t(scene.shapes<Ellipsoid>().size() - 1)};
-  scene.groups[group].primitives.push_back(ref);
-  return ref;
+  return addIn(scene, group, [&](SceneBuilder& build) { return build.add(e); });
 }
 
 // A polygon with the vertices in the given order (counterclockwise seen from the
@@ -63,7 +64,8 @@ inline PrimitiveRef addEllipsoid(Scene& scene, const Mat3& linear, const Vec3& o
 inline PrimitiveRef addPolygon(Scene& scene, const std::vector<Vec3>& vertices,
                                std::uint32_t material, std::uint32_t group = 0) {
   if (polygonProblem(vertices)) throw std::invalid_argument("bad test polygon");
-  return prism::addPolygon(scene, vertices, material, Origin{}, group);
+  return addIn(scene, group,
+               [&](SceneBuilder& build) { return build.polygon(vertices, material, Origin{}); });
 }
 
 // The square [-half, half]^2 in the plane z = height, facing +z (or -z when
@@ -78,7 +80,7 @@ inline PrimitiveRef addHorizontalSquare(Scene& scene, double height, double half
 }
 
 inline void addLight(Scene& scene, const Vec3& position, const Color& intensity) {
-  scene.lights.push_back(Light{position, intensity});
+  SceneBuilder(scene).addLight(Light{position, intensity});
 }
 
 } // namespace prism::test

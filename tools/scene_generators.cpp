@@ -1,5 +1,7 @@
 #include "tools/scene_generators.h"
 
+#include "core/math/hash.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/shape_kinds.h"
 
 #include <algorithm>
@@ -13,25 +15,16 @@ namespace prism {
 
 namespace {
 
-// splitmix64: the same numbers on every platform and standard library.
-class Rng {
+// splitmix64 (core/math/hash.h): the same numbers on every platform and
+// standard library.
+class Rng : public SplitMix64 {
 public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
-  double uniform() { // [0, 1)
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-  }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  using SplitMix64::SplitMix64;
   Vec3 unitVector() {
     const double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * std::numbers::pi);
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     return {r * std::cos(phi), r * std::sin(phi), z};
   }
-
-private:
-  std::uint64_t state_;
 };
 
 // Two unit vectors completing `n` (unit) to a right-handed orthonormal frame.
@@ -40,43 +33,36 @@ void frameAround(const Vec3& n, Vec3& e1, Vec3& e2) {
   e2 = glm::cross(n, e1);
 }
 
-std::uint32_t addMaterial(Scene& scene, const Color& color, double kdr, double ksr, double e) {
+Material plastic(const Color& color, double kdr, double ksr, double e) {
   Material m;
   m.color = color;
   m.kdr = kdr;
   m.ksr = ksr;
   m.e = e;
-  scene.materials.push_back(m);
-  return std::uint32_t(scene.materials.size() - 1);
+  return m;
 }
 
-void addPolygonIfValid(Scene& scene, const std::vector<Vec3>& vertices, std::uint32_t material,
-                       std::uint32_t group) {
-  if (!polygonProblem(vertices)) addPolygon(scene, vertices, material, Origin{}, group);
-}
-
-std::uint32_t addGroup(Scene& scene, std::uint32_t parent) {
-  scene.groups.emplace_back();
-  const auto index = std::uint32_t(scene.groups.size() - 1);
-  scene.groups[parent].children.push_back(index);
-  return index;
+void addPolygonIfValid(SceneBuilder& build, const std::vector<Vec3>& vertices,
+                       std::uint32_t material) {
+  if (!polygonProblem(vertices)) build.polygon(vertices, material, Origin{});
 }
 
 } // namespace
 
 Scene makeSphereflake(std::size_t spheres) {
   Scene scene;
-  scene.files = {"(generated sphereflake)"};
+  SceneBuilder build(scene);
+  build.addFile("(generated sphereflake)");
   scene.camera.eye = Vec3(2.1, 1.7, 2.6);
   scene.camera.lookat = Vec3(0.0, 0.15, 0.0);
   scene.camera.fov = 45.0;
   scene.background = Color(0.08, 0.1, 0.16);
   scene.ambient = Color(0.1);
-  scene.lights.push_back({Vec3(4, 6, 3), Color(40.0)});
-  scene.lights.push_back({Vec3(-5, 3, 4), Color(12.0)});
-  const std::uint32_t ground = addMaterial(scene, Color(0.6, 0.6, 0.55), 0.8, 0.0, 1.0);
-  const std::uint32_t flake = addMaterial(scene, Color(0.85, 0.7, 0.45), 0.5, 0.4, 40.0);
-  addPolygonIfValid(scene, {{-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4}}, ground, 0);
+  build.addLight({Vec3(4, 6, 3), Color(40.0)});
+  build.addLight({Vec3(-5, 3, 4), Color(12.0)});
+  const std::uint32_t ground = build.material(plastic(Color(0.6, 0.6, 0.55), 0.8, 0.0, 1.0));
+  const std::uint32_t flake = build.material(plastic(Color(0.85, 0.7, 0.45), 0.5, 0.4, 40.0));
+  addPolygonIfValid(build, {{-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4}}, ground);
 
   // The 9 child directions in a sphere's own frame (z up): 6 around the
   // equator and 3 above, as in the classic flake.
@@ -104,10 +90,9 @@ Scene makeSphereflake(std::size_t spheres) {
     queue.pop_front();
     // A sphere whose children will be made groups itself with them.
     const bool hasChildren = made + queue.size() + 1 < spheres;
-    const std::uint32_t group = hasChildren ? addGroup(scene, s.parentGroup) : s.parentGroup;
-    scene.shapes<Sphere>().push_back({s.center, s.radius, flake, {}});
-    scene.groups[group].primitives.push_back(
-        {kindOf<Sphere>, std::uint32_t(scene.shapes<Sphere>().size() - 1)});
+    const std::uint32_t group = hasChildren ? build.addGroup(s.parentGroup) : s.parentGroup;
+    build.enter(group); // breadth first: not the group of the sphere before
+    build.add(Sphere{s.center, s.radius, flake, {}});
     ++made;
     if (!hasChildren) continue;
     Vec3 e1, e2;
@@ -151,15 +136,16 @@ struct SoupTriangle {
 // cube [-1, 1]^3 and random orientations, in a scene with a camera and lights.
 Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::uint64_t seed) {
   Scene scene;
-  scene.files = {"(generated polygon soup)"};
+  SceneBuilder build(scene);
+  build.addFile("(generated polygon soup)");
   scene.camera.eye = Vec3(0.0, 0.0, 4.2);
   scene.camera.lookat = Vec3(0.0);
   scene.camera.fov = 40.0;
   scene.background = Color(0.1, 0.12, 0.2);
   scene.ambient = Color(0.15);
-  scene.lights.push_back({Vec3(3, 4, 5), Color(40.0)});
-  scene.lights.push_back({Vec3(-4, 2, 3), Color(12.0)});
-  const std::uint32_t material = addMaterial(scene, Color(0.7, 0.75, 0.8), 0.8, 0.2, 20.0);
+  build.addLight({Vec3(3, 4, 5), Color(40.0)});
+  build.addLight({Vec3(-4, 2, 3), Color(12.0)});
+  const std::uint32_t material = build.material(plastic(Color(0.7, 0.75, 0.8), 0.8, 0.2, 20.0));
 
   std::vector<SoupTriangle> soup(triangles);
   Rng rng(seed);
@@ -185,7 +171,7 @@ Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::
   std::vector<Vec3> v(3);
   for (const SoupTriangle& t : soup) {
     v.assign(t.vertices.begin(), t.vertices.end());
-    addPolygonIfValid(scene, v, material, 0);
+    addPolygonIfValid(build, v, material);
   }
   return scene;
 }

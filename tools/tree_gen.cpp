@@ -23,7 +23,10 @@
 // Deterministic: a fixed seed and our own generator (splitmix64), no
 // std::*_distribution (whose output differs between standard libraries), and
 // numbers printed with %.4g (which also hides last-bit differences between
-// maths libraries). Uses only the C++ standard library.
+// maths libraries). Uses only the C++ standard library and the header-only
+// core/math/hash.h.
+
+#include "core/math/hash.h"
 
 #include <array>
 #include <cmath>
@@ -41,23 +44,8 @@ constexpr double kPi = 3.14159265358979323846;
 // Primitives in parts/twig1.sc, twig2.sc, twig3.sc.
 constexpr long kTwigPrims[3] = {25, 21, 29};
 
-// splitmix64: tiny, fast, and the same on every platform.
-class Rng {
-public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1).
-  double uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-
-private:
-  std::uint64_t state_;
-};
+// splitmix64 (core/math/hash.h): tiny, fast, and the same on every platform.
+using Rng = prism::SplitMix64;
 
 struct Vec {
   double x = 0, y = 0, z = 0;

@@ -2,8 +2,10 @@
 
 #include "core/io/import_common.h"
 #include "core/io/obj_scan.h"
+#include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/triangulate.h"
 
 #include <tiny_obj_loader.h>
@@ -132,7 +134,7 @@ MtlValues valuesOf(const tinyobj::material_t& m, bool illumGiven) {
 // and a weaker fill from the right, each compensated for 1/r^2 so that it
 // delivers its nominal intensity (1 and 0.35) at the mesh's centre; ambient
 // 0.1 so that what neither reaches is not black.
-void addDefaultLights(Scene& scene, const Aabb& box) {
+void addDefaultLights(SceneBuilder& build, const Aabb& box) {
   const Vec3 centre = box.centroid();
   const double radius = std::max(0.5 * glm::length(box.extent()), 1e-300);
   const struct {
@@ -142,9 +144,9 @@ void addDefaultLights(Scene& scene, const Aabb& box) {
   for (const auto& l : kLights) {
     // Far enough (ten radii) that 1/r^2 barely varies across the mesh.
     const Vec3 offset = 10.0 * radius * glm::normalize(l.direction);
-    scene.lights.push_back(
-        {centre + offset, falloffCompensated(Color(l.intensity), glm::length(offset))});
+    build.addLight({centre + offset, falloffCompensated(Color(l.intensity), glm::length(offset))});
   }
+  Scene& scene = build.scene();
   scene.ambient = Color(0.1);
   // A mid-grey backdrop: automatic exposure scales by the image's mean, and a
   // black one would leave a small object overexposed.
@@ -163,10 +165,11 @@ Aabb framedBox(const Scene& scene) {
   return box;
 }
 
-void frameAndLight(Scene& scene, const std::string& file) {
+void frameAndLight(SceneBuilder& build, const std::string& file) {
+  Scene& scene = build.scene();
   const Aabb box = framedBox(scene);
   scene.camera = frameBox(box);
-  addDefaultLights(scene, box);
+  addDefaultLights(build, box);
   bool finite = isFinite(scene.camera.eye);
   for (const Light& light : scene.lights)
     finite = finite && isFinite(light.position) && isFinite(light.intensity);
@@ -209,17 +212,18 @@ bool allFinite(const MtlValues& v) {
 // .sc scenes.
 class ObjMaterials {
 public:
-  ObjMaterials(Scene& scene, const ObjScan& scan, const TinyObj& tiny, const std::string& file)
-      : table_(scene), scan_(scan), tiny_(tiny), file_(file), ids_(scan.usedMaterials.size()) {}
+  ObjMaterials(SceneBuilder& build, const ObjScan& scan, const TinyObj& tiny,
+               const std::string& file)
+      : build_(build), scan_(scan), tiny_(tiny), file_(file), ids_(scan.usedMaterials.size()) {}
 
   std::uint32_t of(const ObjFace& face) {
     if (face.material == kNoMaterial) {
-      if (!fallback_) fallback_ = table_.intern(defaultMaterial());
+      if (!fallback_) fallback_ = build_.material(defaultMaterial());
       return *fallback_;
     }
     if (face.material >= ids_.size()) internalError(file_, face.line, "an unknown material");
     std::optional<std::uint32_t>& slot = ids_[face.material];
-    if (!slot) slot = table_.intern(convert(face));
+    if (!slot) slot = build_.material(convert(face));
     return *slot;
   }
 
@@ -242,7 +246,7 @@ private:
     return materialFromMtl(values);
   }
 
-  MaterialTable table_;
+  SceneBuilder& build_;
   const ObjScan& scan_;
   const TinyObj& tiny_;
   const std::string& file_;
@@ -255,16 +259,16 @@ private:
 // and every index it returns is checked before use.
 class FaceBuilder {
 public:
-  FaceBuilder(Scene& scene, const ObjScan& scan, const std::vector<bool>& usable,
+  FaceBuilder(SceneBuilder& build, const ObjScan& scan, const std::vector<bool>& usable,
               ObjMaterials& materials, const std::string& file)
-      : scene_(scene), scan_(scan), usable_(usable), materials_(materials), file_(file) {}
+      : build_(build), scene_(build.scene()), scan_(scan), usable_(usable), materials_(materials),
+        file_(file) {}
 
   void addShape(const tinyobj::mesh_t& mesh) {
     // Each OBJ object or group is a group of the scene (the hint `--accel
-    // groups` builds on).
-    const auto group = std::uint32_t(scene_.groups.size());
-    scene_.groups.push_back(Group{});
-    scene_.groups[0].children.push_back(group);
+    // groups` builds on), written where its first face is.
+    const bool hasFaces = !mesh.num_face_vertices.empty() && face_ < scan_.faces.size();
+    build_.push(hasFaces ? Origin{0, scan_.faces[face_].line} : Origin{});
     std::size_t next = 0; // the face's first corner in mesh.indices
     for (std::size_t f = 0; f < mesh.num_face_vertices.size(); ++f, ++face_) {
       if (face_ >= scan_.faces.size()) internalError(file_, 1, "tinyobjloader read more faces");
@@ -273,11 +277,11 @@ public:
           face.corners > mesh.indices.size() - next) {
         internalError(file_, face.line, "tinyobjloader read another number of vertices");
       }
-      if (f == 0) scene_.groups[group].origin = Origin{0, face.line};
-      addFace({mesh.indices.data() + next, face.corners}, face, group);
+      addFace({mesh.indices.data() + next, face.corners}, face);
       next += face.corners;
     }
     if (next != mesh.indices.size()) internalError(file_, 1, "tinyobjloader read more vertices");
+    build_.pop();
   }
 
   // After the last shape.
@@ -289,8 +293,7 @@ public:
   std::size_t notSimple() const { return notSimple_; }
 
 private:
-  void addFace(std::span<const tinyobj::index_t> corners, const ObjFace& face,
-               std::uint32_t group) {
+  void addFace(std::span<const tinyobj::index_t> corners, const ObjFace& face) {
     const std::uint32_t material = materials_.of(face);
     bool smooth = true;
     points_.clear();
@@ -309,7 +312,7 @@ private:
         n[c] = smooth ? std::uint32_t(ix.normal_index) : kNoNormal;
       }
       const Origin origin{0, face.line};
-      if (!addMeshTriangle(scene_, v, smooth ? &n : nullptr, material, origin, group)) ++dropped_;
+      if (!build_.meshTriangle(v, smooth ? &n : nullptr, material, origin)) ++dropped_;
     }
     // A face of zero area is not simple either; it is reported as dropped.
     const bool keptSome = dropped_ - droppedBefore < triangulation.triangles.size();
@@ -338,7 +341,8 @@ private:
     return p;
   }
 
-  Scene& scene_;
+  SceneBuilder& build_;
+  const Scene& scene_;
   const ObjScan& scan_;
   const std::vector<bool>& usable_;
   ObjMaterials& materials_;
@@ -367,26 +371,24 @@ Material materialFromMtl(const MtlValues& mtl) {
 
 Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnings) {
   const std::string name = path.string();
-  std::string text;
-  if (const std::optional<std::string> problem = readFile(path, false, text, kMaxObjBytes)) {
-    throw SceneError({Diagnostic{name, 1, 1, "cannot read file: " + *problem}});
-  }
+  std::string text = readSceneText(path, kMaxObjBytes);
   ObjScan scan = scanObj(text, name, path.parent_path());
   if (!scan.errors.empty()) throw SceneError(std::move(scan.errors));
   normaliseObjForTinyObj(text);
   TinyObj tiny = readWithTinyObj(std::move(text), scan, name, warnings);
 
   Scene scene;
-  scene.files.push_back(name);
+  SceneBuilder build(scene);
+  build.addFile(name);
   // Listed so that the previewer reloads when a material file changes too.
   for (const MaterialLibrary& library : scan.libraries)
-    scene.files.push_back(library.path);
+    build.addFile(library.path);
   copyVertices(tiny.attrib, scene);
   const std::vector<bool> usable = copyNormals(tiny.attrib, scene);
   tiny.attrib = tinyobj::attrib_t{};
 
-  ObjMaterials materials(scene, scan, tiny, name);
-  FaceBuilder faces(scene, scan, usable, materials, name);
+  ObjMaterials materials(build, scan, tiny, name);
+  FaceBuilder faces(build, scan, usable, materials, name);
   scene.shapes<Triangle>().reserve(scan.triangles);
   for (const tinyobj::shape_t& shape : tiny.shapes)
     faces.addShape(shape.mesh);
@@ -404,7 +406,7 @@ Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnin
       warnings->push_back({name, 1, 1, "the file has no faces: nothing to render"});
     }
   }
-  frameAndLight(scene, name);
+  frameAndLight(build, name);
   return scene;
 }
 

@@ -3,12 +3,16 @@
 // A hand-written lexer over the whole file text and a recursive-descent parser,
 // one small member function per command. Errors never stop the parse early: each
 // is recorded with its position, the rest of the broken command is skipped, and
-// parsing continues so that one run reports every problem (up to a cap).
+// parsing continues so that one run reports every problem (up to a cap). How
+// arguments are read and errors reported is shared with the NFF reader
+// (ReaderBase); what a command adds goes through the SceneBuilder.
 #include "core/io/scene_parser.h"
 
+#include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
+#include "core/scene/scene_builder.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/shape_kinds.h"
 #include "core/shapes/triangle.h"
@@ -16,12 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cerrno>
-#include <charconv>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -36,7 +35,6 @@ namespace {
 // ---------------------------------------------------------------------------
 // Limits that keep hostile input from exhausting time or memory.
 
-constexpr std::size_t kMaxDiagnostics = 50;
 constexpr std::size_t kMaxIncludeDepth = 64; // files open at once, the main file included
 // kMaxSceneBytes (core/io/scene_text.h) bounds the text parsed, counting every
 // inclusion of a file: a few lines that include a file twice, which includes
@@ -44,8 +42,6 @@ constexpr std::size_t kMaxIncludeDepth = 64; // files open at once, the main fil
 // single file read.
 constexpr const char* kMaxSceneBytesText = "256 MiB";
 constexpr int kMinResolution = 1;
-constexpr int kMaxResolution = 32768;
-constexpr std::uint64_t kMaxPolygonVertices = std::numeric_limits<std::uint32_t>::max();
 // Groups open at once. Each costs a saved material and transform (about 400
 // bytes), so without a limit a file of nothing but `push` would need 80 times
 // its size in memory.
@@ -53,35 +49,6 @@ constexpr std::size_t kMaxGroupDepth = 100000;
 
 // ---------------------------------------------------------------------------
 // Parser
-
-// Unwinds the parse once the diagnostic cap is reached, or after an error
-// that would bury the rest under follow-up errors.
-struct StopParsing {};
-
-struct Location {
-  std::string file;
-  int line = 1;
-  int column = 1;
-
-  std::string text() const {
-    return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-  }
-};
-
-// A numeric argument and the token it was read from (for messages).
-struct Arg {
-  double value = 0.0;
-  Token token;
-};
-
-// One command being parsed.
-struct Command {
-  Token keyword;
-  std::string name;  // the keyword, for messages
-  bool valid = true; // false once an argument broke a constraint: not applied
-};
-
-Vec3 vec(const Arg* a) { return Vec3(a[0].value, a[1].value, a[2].value); }
 
 // True when the transform turns space inside out, so counterclockwise vertex order
 // becomes clockwise. The sign of the determinant of the unit-length columns: the
@@ -103,33 +70,7 @@ template <int N> bool allFinite(const glm::mat<N, N, double>& m) {
   return true;
 }
 
-using MaterialKey = std::array<double, 8>;
-
-MaterialKey keyOf(const Material& m) {
-  return {m.color.r, m.color.g, m.color.b, m.kdr, m.ksr, m.kst, m.e, m.ir};
-}
-
-// Agrees with the == of MaterialKey, which takes -0 and 0 as equal.
-struct MaterialKeyHash {
-  std::size_t operator()(const MaterialKey& key) const {
-    std::uint64_t h = 0;
-    for (const double v : key) {
-      std::uint64_t bits = 0;
-      const double positiveZero = v + 0.0; // -0 + 0 is +0
-      std::memcpy(&bits, &positiveZero, sizeof bits);
-      h = mix(h ^ bits);
-    }
-    return std::size_t(h);
-  }
-  // The splitmix64 finaliser: every input bit affects every output bit.
-  static std::uint64_t mix(std::uint64_t x) {
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  }
-};
-
-class Parser {
+class Parser : public ReaderBase {
 public:
   Scene run(std::string_view text, const std::string& name);
 
@@ -151,12 +92,10 @@ private:
     std::size_t savedAtEntry = 0; // saved_.size() when the file began
   };
 
-  // What `push` saves and `pop` restores.
+  // What `push` saves and `pop` restores, besides the group and material
+  // the builder saves.
   struct Saved {
-    Material material;
-    std::optional<std::uint32_t> materialIndex;
     Transform transform;
-    std::uint32_t group = 0;
     Location pushedAt;
   };
 
@@ -166,31 +105,7 @@ private:
   void closeOpenPushes();
   void checkCamera();
 
-  // Diagnostics and recovery.
-  void report(Location at, std::string message);
-  void error(const Token& at, std::string message) {
-    report({file().name, at.line, at.column}, std::move(message));
-  }
-  void invalid(Command& c, const Token& at, const std::string& message) {
-    c.valid = false;
-    error(at, c.name + ": " + message);
-  }
-  void resync();
-  void skipNumbers();
-
-  // Arguments. Each returns false when the argument is missing (already reported
-  // and the input resynchronised); the command must then stop reading.
-  bool argumentToken(Command& c, const char* name, const char* kind, Token& out);
-  bool number(Command& c, const char* name, Arg& out);
-  template <std::size_t N> bool numbers(Command& c, const char* const (&names)[N], Arg (&out)[N]) {
-    for (std::size_t i = 0; i < N; ++i) {
-      if (!number(c, names[i], out[i])) return false;
-    }
-    return true;
-  }
-  void requireNonNegative(Command& c, const Arg& a, const char* name);
-  void requireColor(Command& c, const Arg* rgb);
-  bool once(Command& c);
+  bool startsCommand(std::string_view word) const override { return handlerFor(word) != nullptr; }
 
   // Commands.
   void eye(Command& c) { cameraPoint(c, scene_.camera.eye, true); }
@@ -220,8 +135,6 @@ private:
   // State.
   SourceFile& file() { return *files_.back(); }
   Origin origin(const Command& c) { return {file().index, std::uint32_t(c.keyword.line)}; }
-  std::uint32_t currentMaterial();
-  void addPrimitive(PrimitiveKind kind, std::size_t index);
   void compose(Command& c, const Transform& t);
   std::optional<std::string> readInclude(const fs::path& path, const fs::path& identity,
                                          const std::string*& text);
@@ -234,14 +147,10 @@ private:
   const ResolvedInclude& resolveInclude(std::string_view raw);
 
   Scene scene_;
-  std::vector<Diagnostic> diagnostics_;
+  SceneBuilder build_{scene_}; // the current material and group too
 
-  Material material_;
-  std::optional<std::uint32_t> materialIndex_; // material_ interned, once a primitive used it
-  std::unordered_map<MaterialKey, std::uint32_t, MaterialKeyHash> materialIds_;
   Transform transform_;
-  std::uint32_t group_ = 0;
-  std::vector<Saved> saved_;
+  std::vector<Saved> saved_; // in step with build_'s pushes
 
   std::vector<std::unique_ptr<SourceFile>> files_;            // the include stack, main file first
   std::map<fs::path, std::string> contents_;                  // every included file, read once
@@ -249,7 +158,6 @@ private:
   std::map<fs::path, std::uint32_t> fileIndices_;
   std::size_t parsedBytes_ = 0;
 
-  std::map<std::string, Location> firstGiven_; // commands allowed once, by name
   bool cameraBroken_ = false;  // an eye/lookat/up was rejected: skip the camera checks
   std::vector<Vec3> vertices_; // scratch for polygon
 };
@@ -286,13 +194,11 @@ Parser::Handler Parser::handlerFor(std::string_view name) {
 
 Scene Parser::run(std::string_view text, const std::string& name) {
   const fs::path identity = identityOf(name);
-  try {
+  readAll([&] {
     parsedBytes_ = text.size();
     parseFile(text, name, identity, fileIndex(identity, name));
     checkCamera();
-  } catch (const StopParsing&) {
-  }
-  if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
+  });
   return std::move(scene_);
 }
 
@@ -300,11 +206,13 @@ void Parser::parseFile(std::string_view text, const std::string& name, const fs:
                        std::uint32_t index) {
   files_.push_back(
       std::make_unique<SourceFile>(SourceFile{name, identity, index, Lexer(text), saved_.size()}));
+  readFrom(file().lexer, file().name);
   while (!file().lexer.peek().atEnd()) {
     command();
   }
   closeOpenPushes();
   files_.pop_back();
+  if (!files_.empty()) readFrom(file().lexer, file().name);
 }
 
 void Parser::command() {
@@ -338,88 +246,10 @@ void Parser::closeOpenPushes() {
   for (std::size_t i = base; i < saved_.size(); ++i) {
     report(saved_[i].pushedAt, "push without matching pop");
   }
-  const Saved& outer = saved_[base];
-  material_ = outer.material;
-  materialIndex_ = outer.materialIndex;
-  transform_ = outer.transform;
-  group_ = outer.group;
+  transform_ = saved_[base].transform;
   saved_.resize(base);
-}
-
-void Parser::report(Location at, std::string message) {
-  if (diagnostics_.size() >= kMaxDiagnostics) {
-    diagnostics_.push_back({std::move(at.file), at.line, at.column, "too many errors; giving up"});
-    throw StopParsing{};
-  }
-  diagnostics_.push_back({std::move(at.file), at.line, at.column, std::move(message)});
-}
-
-// After a missing or malformed argument: drop the offending token unless it starts
-// the next command, then the numbers that belonged to the broken command.
-void Parser::resync() {
-  const Token& token = file().lexer.peek();
-  if (!token.atEnd() && handlerFor(token.text) == nullptr) file().lexer.next();
-  skipNumbers();
-}
-
-void Parser::skipNumbers() {
-  Lexer& lexer = file().lexer;
-  while (!lexer.peek().atEnd() && isNumber(lexer.peek().text)) {
-    lexer.next();
-  }
-}
-
-// ---------------------------------------------------------------------------
-// Arguments
-
-bool Parser::argumentToken(Command& c, const char* name, const char* kind, Token& out) {
-  out = file().lexer.peek();
-  if (out.atEnd()) {
-    error(c.keyword, c.name + ": expected " + name + " but reached the end of the file");
-    return false;
-  }
-  if (!isNumber(out.text)) {
-    error(out, c.name + ": expected " + name + " (" + kind + ") but found " + quoted(out.text));
-    resync();
-    return false;
-  }
-  file().lexer.next();
-  return true;
-}
-
-bool Parser::number(Command& c, const char* name, Arg& out) {
-  if (!argumentToken(c, name, "a number", out.token)) return false;
-  if (parseNumber(out.token.text, out.value) == NumberKind::NonFinite) {
-    invalid(c, out.token,
-            std::string(name) + " is not a finite number (" + quoted(out.token.text) + ")");
-    // NaN fails every later range check silently: one message per bad argument.
-    out.value = std::numeric_limits<double>::quiet_NaN();
-  }
-  return true;
-}
-
-void Parser::requireNonNegative(Command& c, const Arg& a, const char* name) {
-  if (a.value < 0.0) {
-    invalid(c, a.token, std::string(name) + " must not be negative, found " + quoted(a.token.text));
-  }
-}
-
-void Parser::requireColor(Command& c, const Arg* rgb) {
-  static constexpr const char* kNames[] = {"R", "G", "B"};
-  for (int i = 0; i < 3; ++i) {
-    requireNonNegative(c, rgb[i], kNames[i]);
-  }
-}
-
-// Camera and image commands may be given once in the whole scene.
-bool Parser::once(Command& c) {
-  const Location here{file().name, c.keyword.line, c.keyword.column};
-  const auto [first, inserted] = firstGiven_.try_emplace(c.name, here);
-  if (!inserted) {
-    c.valid = false;
-    error(c.keyword, "duplicate '" + c.name + "' (first given at " + first->second.text() + ")");
-  }
-  return inserted;
+  while (build_.openPushes() > base)
+    build_.pop();
 }
 
 // ---------------------------------------------------------------------------
@@ -455,18 +285,9 @@ void Parser::resolution(Command& c) {
   int size[2] = {0, 0};
   static constexpr const char* kNames[] = {"W", "H"};
   for (int i = 0; i < 2; ++i) {
-    Token token;
-    if (!argumentToken(c, kNames[i], "an integer", token)) return;
-    const std::optional<std::uint64_t> value = parseInteger(token.text);
-    if (!value || *value < std::uint64_t(kMinResolution) ||
-        *value > std::uint64_t(kMaxResolution)) {
-      invalid(c, token,
-              std::string(kNames[i]) + " must be an integer from " +
-                  std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) +
-                  ", found " + quoted(token.text));
-    } else {
-      size[i] = int(*value);
-    }
+    std::optional<std::uint64_t> value;
+    if (!integer(c, kNames[i], kMinResolution, kMaxResolution, value)) return;
+    if (value) size[i] = int(*value);
   }
   if (!c.valid) return;
   scene_.width = size[0];
@@ -491,7 +312,7 @@ void Parser::light(Command& c) {
     error(c.keyword, outsideModelRangeMessage("light"));
     return;
   }
-  scene_.lights.push_back({position, vec(a + 3)});
+  build_.addLight({position, vec(a + 3)});
 }
 
 void Parser::surface(Command& c) {
@@ -505,26 +326,11 @@ void Parser::surface(Command& c) {
     invalid(c, a[7].token, "IR must be positive, found " + quoted(a[7].token.text));
   }
   if (!c.valid) return;
-  material_ = Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value};
-  materialIndex_.reset();
+  build_.setMaterial(Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value});
 }
 
 // ---------------------------------------------------------------------------
 // Primitives
-
-// Interns the current material on first use: identical materials share one entry.
-std::uint32_t Parser::currentMaterial() {
-  if (materialIndex_) return *materialIndex_;
-  const auto [it, inserted] =
-      materialIds_.try_emplace(keyOf(material_), std::uint32_t(scene_.materials.size()));
-  if (inserted) scene_.materials.push_back(material_);
-  materialIndex_ = it->second;
-  return it->second;
-}
-
-void Parser::addPrimitive(PrimitiveKind kind, std::size_t index) {
-  scene_.groups[group_].primitives.push_back({kind, std::uint32_t(index)});
-}
 
 void Parser::sphere(Command& c) {
   Arg a[4];
@@ -542,13 +348,12 @@ void Parser::sphere(Command& c) {
       error(c.keyword, "sphere: too small after the current transform");
       return;
     }
-    const Sphere sphere{center, radius, currentMaterial(), origin(c)};
+    const Sphere sphere{center, radius, build_.currentMaterial(), origin(c)};
     if (!withinModelRange(boundsOf(sphere))) {
       error(c.keyword, outsideModelRangeMessage("sphere"));
       return;
     }
-    scene_.shapes<Sphere>().push_back(sphere);
-    addPrimitive(kindOf<Sphere>, scene_.shapes<Sphere>().size() - 1);
+    build_.add(sphere);
     return;
   }
   // A non-uniform scale makes it the image of the unit sphere under x -> L (r x) + center.
@@ -570,55 +375,22 @@ void Parser::sphere(Command& c) {
     error(c.keyword, tooUnevenMessage("sphere"));
     return;
   }
-  e.material = currentMaterial();
+  e.material = build_.currentMaterial();
   e.origin = origin(c);
-  scene_.shapes<Ellipsoid>().push_back(e);
-  addPrimitive(kindOf<Ellipsoid>, scene_.shapes<Ellipsoid>().size() - 1);
+  build_.add(e);
 }
 
 void Parser::polygon(Command& c) {
-  Token countToken;
-  if (!argumentToken(c, "N", "an integer", countToken)) return;
-  const std::optional<std::uint64_t> count = parseInteger(countToken.text);
-  if (!count || *count < 3 || *count > kMaxPolygonVertices) {
-    error(countToken, "polygon: N must be an integer from 3 to " +
-                          std::to_string(kMaxPolygonVertices) + ", found " +
-                          quoted(countToken.text));
-    skipNumbers();
-    return;
-  }
-  // Vertices are read as they come, never reserved from N: a hostile N costs
-  // nothing until the numbers are actually there.
-  const std::uint64_t wanted = 3 * *count;
+  const std::optional<std::uint64_t> count = vertexCount(c);
+  if (!count) return;
   vertices_.clear();
   Vec3 vertex(0.0);
-  for (std::uint64_t found = 0; found < wanted; ++found) {
-    Lexer& lexer = file().lexer;
-    const Token token = lexer.peek();
-    double value = 0.0;
-    const NumberKind kind = token.atEnd() ? NumberKind::NotANumber : parseNumber(token.text, value);
-    if (kind == NumberKind::NotANumber) {
-      const std::string expected = "polygon: expected " + std::to_string(wanted) + " numbers for " +
-                                   std::to_string(*count) + " vertices, found " +
-                                   std::to_string(found);
-      if (token.atEnd()) {
-        error(c.keyword, expected + " before the end of the file");
-      } else {
-        error(token, expected + " before " + quoted(token.text));
-        resync();
-      }
-      return;
-    }
-    lexer.next();
+  const auto take = [&](std::uint64_t found, double value, const Token&) {
     const int axis = int(found % 3);
-    if (kind == NumberKind::NonFinite) {
-      const std::string name = std::string(1, "XYZ"[axis]) + std::to_string(found / 3 + 1);
-      invalid(c, token, name + " is not a finite number (" + quoted(token.text) + ")");
-    }
     vertex[axis] = value;
     if (axis == 2) vertices_.push_back(transform_.point(vertex));
-  }
-  if (!c.valid) return;
+  };
+  if (!vertexNumbers(c, *count, 3, take) || !c.valid) return;
   // A mirroring transform would turn the counterclockwise order, and with it the
   // outward normal, inside out.
   if (mirrors(transform_)) std::reverse(vertices_.begin(), vertices_.end());
@@ -632,7 +404,7 @@ void Parser::polygon(Command& c) {
     error(c.keyword, "polygon: " + *problem);
     return;
   }
-  addPolygon(scene_, vertices_, currentMaterial(), origin(c), group_);
+  build_.polygon(vertices_, build_.currentMaterial(), origin(c));
 }
 
 void Parser::cone(Command& c) {
@@ -664,10 +436,9 @@ void Parser::cone(Command& c) {
     error(c.keyword, tooUnevenMessage("cone"));
     return;
   }
-  cone.material = currentMaterial();
+  cone.material = build_.currentMaterial();
   cone.origin = origin(c);
-  scene_.shapes<Cone>().push_back(cone);
-  addPrimitive(kindOf<Cone>, scene_.shapes<Cone>().size() - 1);
+  build_.add(cone);
 }
 
 void Parser::triangle(Command& c) {
@@ -728,19 +499,7 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
     error(c.keyword, c.name + ": " + *problem);
     return;
   }
-  Triangle t;
-  for (int i = 0; i < 3; ++i) {
-    t.vertex[std::size_t(i)] = std::uint32_t(scene_.meshVertices.size());
-    scene_.meshVertices.push_back(v[i]);
-    if (normals != nullptr) {
-      t.normal[std::size_t(i)] = std::uint32_t(scene_.meshNormals.size());
-      scene_.meshNormals.push_back(n[i]);
-    }
-  }
-  t.material = currentMaterial();
-  t.origin = origin(c);
-  scene_.shapes<Triangle>().push_back(t);
-  addPrimitive(kindOf<Triangle>, scene_.shapes<Triangle>().size() - 1);
+  build_.triangle(v, normals != nullptr ? &n : nullptr, build_.currentMaterial(), origin(c));
 }
 
 // ---------------------------------------------------------------------------
@@ -750,16 +509,10 @@ void Parser::push(Command& c) {
   if (saved_.size() >= kMaxGroupDepth) {
     // Every later pop would be reported as unmatched: stop here.
     error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
-    throw StopParsing{};
+    throw StopReading{};
   }
-  saved_.push_back({material_, materialIndex_, transform_, group_,
-                    Location{file().name, c.keyword.line, c.keyword.column}});
-  const auto child = std::uint32_t(scene_.groups.size());
-  Group group;
-  group.origin = origin(c);
-  scene_.groups.push_back(std::move(group));
-  scene_.groups[group_].children.push_back(child);
-  group_ = child;
+  saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column}});
+  build_.push(origin(c));
 }
 
 void Parser::pop(Command& c) {
@@ -769,12 +522,9 @@ void Parser::pop(Command& c) {
                                       "must balance within each file)");
     return;
   }
-  const Saved& s = saved_.back();
-  material_ = s.material;
-  materialIndex_ = s.materialIndex;
-  transform_ = s.transform;
-  group_ = s.group;
+  transform_ = saved_.back().transform;
   saved_.pop_back();
+  build_.pop();
 }
 
 // Composes `t` onto the current transform unless the result is no longer usable
@@ -824,7 +574,7 @@ void Parser::rotate(Command& c) {
 std::uint32_t Parser::fileIndex(const fs::path& identity, const std::string& name) {
   const auto [it, inserted] =
       fileIndices_.try_emplace(identity, std::uint32_t(scene_.files.size()));
-  if (inserted) scene_.files.push_back(name);
+  if (inserted) build_.addFile(name);
   return it->second;
 }
 
@@ -922,40 +672,25 @@ void Parser::include(Command& c) {
 void Parser::checkCamera() {
   if (cameraBroken_) return;
   const Location mainStart{scene_.files[0], 1, 1};
-  const auto given = [&](const char* name) -> const Location* {
-    const auto it = firstGiven_.find(name);
-    return it == firstGiven_.end() ? nullptr : &it->second;
-  };
+  const auto given = [&](const char* name) { return firstGiven(name); };
   const Location* view = given("lookat") ? given("lookat") : given("eye");
   const Location& viewAt = view ? *view : mainStart;
   const Location& upAt = given("up") ? *given("up") : viewAt;
 
-  // The same computation as Camera's constructor, so that it cannot produce NaN.
-  const CameraSpec& camera = scene_.camera;
-  const Vec3 direction = camera.lookat - camera.eye;
-  if (direction == Vec3(0.0)) {
+  switch (cameraProblem(scene_.camera)) {
+  case CameraProblem::None: return;
+  case CameraProblem::SamePoint:
     report(viewAt, "eye and lookat are the same point, so there is no view direction");
     return;
-  }
-  const Vec3 forward = glm::normalize(direction);
-  if (!isFinite(forward)) {
+  case CameraProblem::NoDirection:
     report(viewAt, "eye and lookat are too close together or too far apart to give a view "
                    "direction");
     return;
-  }
-  if (camera.up == Vec3(0.0)) {
-    report(upAt, "up must not be the zero vector");
-    return;
-  }
-  // The sine of the angle between up and the view direction; 1e-9 catches what is
-  // parallel up to round-off. (Scaled before normalising so that it cannot underflow.)
-  const Vec3 unitUp = glm::normalize(camera.up / maxAbsComponent(camera.up));
-  if (glm::length(glm::cross(forward, unitUp)) < 1e-9) {
+  case CameraProblem::ZeroUp: report(upAt, "up must not be the zero vector"); return;
+  case CameraProblem::ParallelUp:
     report(upAt, "up is parallel to the view direction (from eye to lookat)");
     return;
-  }
-  if (!isFinite(glm::normalize(glm::cross(forward, camera.up)))) {
-    report(upAt, "up is too short to give a direction");
+  case CameraProblem::ShortUp: report(upAt, "up is too short to give a direction"); return;
   }
 }
 
@@ -966,12 +701,7 @@ Scene parseScene(std::string_view text, const std::string& name) {
 }
 
 Scene loadScene(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::string text;
-  if (const std::optional<std::string> problem = readFile(path, false, text)) {
-    throw SceneError({Diagnostic{name, 1, 1, "cannot read file: " + *problem}});
-  }
-  return parseScene(text, name);
+  return parseScene(readSceneText(path), path.string());
 }
 
 } // namespace prism

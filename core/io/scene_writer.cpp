@@ -1,10 +1,8 @@
 #include "core/io/scene_writer.h"
 
 #include "core/io/pending_file.h"
-#include "core/math/affine_decompose.h"
+#include "core/io/shape_text/shape_text.h"
 
-#include <algorithm>
-#include <charconv>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -14,18 +12,12 @@ namespace prism {
 
 namespace {
 
-// The shortest text that reads back as exactly `x` (std::to_chars).
-std::string num(double x) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
-
-std::string vec(const Vec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+using sc::num;
+using sc::vec;
 
 class Writer {
 public:
-  Writer(std::ostream& out, const Scene& scene) : out_(out), scene_(scene) {}
+  Writer(std::ostream& out, const Scene& scene) : out_(out), scene_(scene), text_(out, scene) {}
 
   void header(const std::string& text) {
     std::istringstream lines(text);
@@ -75,13 +67,7 @@ public:
   }
 
 private:
-  // Starts a line indented by two spaces per level, up to kMaxIndent levels:
-  // deeper nesting is not indented further, or the output would grow with
-  // the square of the depth.
-  static constexpr int kMaxIndent = 16;
-  std::ostream& line(int depth) {
-    return out_ << std::string(std::size_t(std::min(depth, kMaxIndent)) * 2, ' ');
-  }
+  std::ostream& line(int depth) { return text_.line(depth); }
 
   void primitives(std::uint32_t group, int depth) {
     for (const PrimitiveRef& ref : scene_.groups[group].primitives)
@@ -95,73 +81,15 @@ private:
     current_ = m;
   }
 
-  // translate, rotate, scale, rotate: the map x -> offset + a x, for an
-  // object written in its own frame.
-  void placed(const Mat3& a, const Vec3& offset, int depth) {
-    const RotationScaleRotation d = decompose(a);
-    line(depth) << "translate " << vec(offset) << "\n";
-    Vec3 axis;
-    double degrees;
-    axisAngle(d.u, axis, degrees);
-    line(depth) << "rotate " << vec(axis) << " " << num(degrees) << "\n";
-    line(depth) << "scale " << vec(d.scale) << "\n";
-    axisAngle(glm::transpose(d.v), axis, degrees);
-    line(depth) << "rotate " << vec(axis) << " " << num(degrees) << "\n";
-  }
-
+  // Each kind's text is written by its own file (core/io/shape_text/).
   void primitive(const PrimitiveRef& ref, int depth) {
     material(scene_.material(ref), depth);
-    scene_.visit(ref, [&](const auto& shape) { write(shape, depth); });
-  }
-
-  void write(const Sphere& s, int depth) {
-    line(depth) << "sphere " << vec(s.center) << " " << num(s.radius) << "\n";
-  }
-
-  // The unit sphere under objectToWorld.
-  void write(const Ellipsoid& e, int depth) {
-    line(depth) << "push\n";
-    placed(e.objectToWorld, e.center, depth + 1);
-    line(depth + 1) << "sphere 0 0 0 1\n";
-    line(depth) << "pop\n";
-  }
-
-  void write(const Polygon& p, int depth) {
-    line(depth) << "polygon " << p.vertexCount;
-    for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
-      out_ << "  " << vec(scene_.polygonVertices[p.firstVertex + i]);
-    }
-    out_ << "\n";
-  }
-
-  void write(const Triangle& t, int depth) {
-    line(depth) << (t.smooth() ? "ptriangle" : "triangle");
-    for (int i = 0; i < 3; ++i) {
-      out_ << "  " << vec(scene_.meshVertices[t.vertex[std::size_t(i)]]);
-      if (t.smooth()) out_ << "  " << vec(scene_.meshNormals[t.normal[std::size_t(i)]]);
-    }
-    out_ << "\n";
-  }
-
-  void write(const Cone& c, int depth) {
-    const Mat3& m = c.objectToWorld;
-    if (isCircular(c)) {
-      const double unit = glm::length(m[0]); // world length of the frame's x
-      line(depth) << "cone " << vec(c.objectToWorldOffset) << " " << num(c.baseRadius * unit)
-                  << "  " << vec(c.objectToWorldOffset + m[2]) << " " << num(c.apexRadius * unit)
-                  << "\n";
-      return;
-    }
-    // Elliptic (sheared or unevenly scaled): the cone in its own frame, placed.
-    line(depth) << "push\n";
-    placed(m, c.objectToWorldOffset, depth + 1);
-    line(depth + 1) << "cone 0 0 0 " << num(c.baseRadius) << "  0 0 1 " << num(c.apexRadius)
-                    << "\n";
-    line(depth) << "pop\n";
+    scene_.visit(ref, [&](const auto& shape) { sc::write(text_, shape, depth); });
   }
 
   std::ostream& out_;
   const Scene& scene_;
+  sc::TextOut text_;
   Material current_; // the parser's default surface
 };
 

@@ -1,21 +1,12 @@
 #include "core/render/image_formation.h"
 
+#include "core/math/hash.h"
+
 #include <algorithm>
 
 namespace prism {
 
 namespace {
-
-// splitmix64: a small, well-mixed hash, so each (pixel, cell) has its own fixed
-// jitter whatever the order in which pixels are traced.
-std::uint64_t mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-
-double unitFromBits(std::uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
 
 double distanceSquared(const Rgb& a, const Rgb& b) {
   const double dr = double(a.r) - double(b.r);
@@ -94,9 +85,11 @@ Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool ji
     for (int i = 0; i < 4; ++i) {
       double u = 0.5, v = 0.5;
       if (jitter) {
-        const std::uint64_t h = mix(pixelKey ^ mix(std::uint64_t(j * 4 + i)));
+        // A hash of (pixel, cell), so each has its own fixed jitter whatever
+        // the order in which pixels are traced.
+        const std::uint64_t h = splitmix64(pixelKey ^ splitmix64(std::uint64_t(j * 4 + i)));
         u = unitFromBits(h);
-        v = unitFromBits(mix(h));
+        v = unitFromBits(splitmix64(h));
       }
       rays[j * 4 + i] = camera.eyeRay(x + (i + u) / 4.0, y + (j + v) / 4.0);
     }

@@ -36,23 +36,6 @@ std::string Scene::describe(PrimitiveRef ref) const {
   return text.str();
 }
 
-PrimitiveRef addPolygon(Scene& scene, std::span<const Vec3> vertices, std::uint32_t material,
-                        Origin origin, std::uint32_t group) {
-  Polygon p = makePolygon(vertices);
-  p.firstVertex = std::uint32_t(scene.polygonVertices.size());
-  p.material = material;
-  p.origin = origin;
-  if (p.vertexCount >= kIndexedPolygonVertices) {
-    p.edgeIndex = std::uint32_t(scene.polygonEdgeIndices.size());
-    scene.polygonEdgeIndices.emplace_back(vertices, polygonAxes(p).u, polygonAxes(p).v);
-  }
-  scene.polygonVertices.insert(scene.polygonVertices.end(), vertices.begin(), vertices.end());
-  scene.shapes<Polygon>().push_back(p);
-  const PrimitiveRef ref{kindOf<Polygon>, std::uint32_t(scene.shapes<Polygon>().size() - 1)};
-  scene.groups[group].primitives.push_back(ref);
-  return ref;
-}
-
 std::vector<PrimitiveRef> Scene::allPrimitives() const {
   std::vector<PrimitiveRef> refs;
   refs.reserve(primitiveCount());

@@ -93,10 +93,4 @@ private:
   }
 };
 
-// Adds a polygon (whose vertices passed polygonProblem) to the scene and to
-// group `group`, with an edge index when it has many vertices. Every reader
-// and generator makes polygons through it.
-PrimitiveRef addPolygon(Scene& scene, std::span<const Vec3> vertices, std::uint32_t material,
-                        Origin origin, std::uint32_t group);
-
 } // namespace prism

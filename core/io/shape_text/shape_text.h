@@ -1,0 +1,49 @@
+// How each shape kind is written back as .sc text, one file per kind
+// (sphere_text.cpp, ...), and what they write with: numbers in their shortest
+// exact form, indented lines, and placing an object written in its own
+// frame. scene_writer.cpp writes the rest of the scene and reaches these
+// through Scene::visit, so a new kind adds a file here, not a case there.
+#pragma once
+
+#include "core/scene/scene.h"
+
+#include <ostream>
+#include <string>
+
+namespace prism::sc {
+
+// The shortest text that reads back as exactly `x` (std::to_chars).
+std::string num(double x);
+std::string vec(const Vec3& v); // "X Y Z"
+
+// Where the text goes, and the scene whose arrays the shapes index into.
+class TextOut {
+public:
+  TextOut(std::ostream& out, const Scene& scene) : out_(out), scene_(scene) {}
+
+  const Scene& scene() const { return scene_; }
+  std::ostream& out() { return out_; }
+
+  // Starts a line indented by two spaces per level, up to kMaxIndent levels:
+  // deeper nesting is not indented further, or the output would grow with
+  // the square of the depth.
+  std::ostream& line(int depth);
+
+  // translate, rotate, scale, rotate: the map x -> offset + a x, for an
+  // object written in its own frame.
+  void placed(const Mat3& a, const Vec3& offset, int depth);
+
+private:
+  static constexpr int kMaxIndent = 16;
+  std::ostream& out_;
+  const Scene& scene_;
+};
+
+// One command (or a push/pop block) per shape, at nesting depth `depth`.
+void write(TextOut& text, const Sphere& s, int depth);
+void write(TextOut& text, const Ellipsoid& e, int depth);
+void write(TextOut& text, const Polygon& p, int depth);
+void write(TextOut& text, const Triangle& t, int depth);
+void write(TextOut& text, const Cone& c, int depth);
+
+} // namespace prism::sc

@@ -1,0 +1,17 @@
+// A mesh triangle: `triangle` with its three vertices, or `ptriangle` with
+// each vertex followed by its normal when it is smooth.
+#include "core/io/shape_text/shape_text.h"
+
+namespace prism::sc {
+
+void write(TextOut& text, const Triangle& t, int depth) {
+  const Scene& scene = text.scene();
+  text.line(depth) << (t.smooth() ? "ptriangle" : "triangle");
+  for (int i = 0; i < 3; ++i) {
+    text.out() << "  " << vec(scene.meshVertices[t.vertex[std::size_t(i)]]);
+    if (t.smooth()) text.out() << "  " << vec(scene.meshNormals[t.normal[std::size_t(i)]]);
+  }
+  text.out() << "\n";
+}
+
+} // namespace prism::sc

@@ -1,0 +1,35 @@
+#include "core/scene/material_table.h"
+
+#include "core/math/hash.h"
+
+#include <cstring>
+
+namespace prism {
+
+MaterialTable::MaterialTable(std::vector<Material>& materials) : materials_(materials) {
+  for (std::uint32_t i = 0; i < materials_.size(); ++i)
+    ids_.try_emplace(keyOf(materials_[i]), i);
+}
+
+std::uint32_t MaterialTable::intern(const Material& m) {
+  const auto [it, inserted] = ids_.try_emplace(keyOf(m), std::uint32_t(materials_.size()));
+  if (inserted) materials_.push_back(m);
+  return it->second;
+}
+
+MaterialTable::Key MaterialTable::keyOf(const Material& m) {
+  return {m.color.r, m.color.g, m.color.b, m.kdr, m.ksr, m.kst, m.e, m.ir};
+}
+
+std::size_t MaterialTable::KeyHash::operator()(const Key& key) const {
+  std::uint64_t h = 0;
+  for (const double v : key) {
+    std::uint64_t bits = 0;
+    const double positiveZero = v + 0.0; // -0 + 0 is +0
+    std::memcpy(&bits, &positiveZero, sizeof bits);
+    h = hashCombine(h, bits);
+  }
+  return std::size_t(h);
+}
+
+} // namespace prism

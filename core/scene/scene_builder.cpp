@@ -1,0 +1,91 @@
+#include "core/scene/scene_builder.h"
+
+namespace prism {
+
+std::uint32_t SceneBuilder::addGroup(std::uint32_t parent, Origin origin) {
+  const auto index = std::uint32_t(scene_.groups.size());
+  Group group;
+  group.origin = origin;
+  scene_.groups.push_back(std::move(group));
+  scene_.groups[parent].children.push_back(index);
+  return index;
+}
+
+std::uint32_t SceneBuilder::push(Origin origin) {
+  saved_.push_back({group_, current_, currentIndex_});
+  group_ = addGroup(group_, origin);
+  return group_;
+}
+
+void SceneBuilder::pop() {
+  const Saved& s = saved_.back();
+  group_ = s.group;
+  current_ = s.material;
+  currentIndex_ = s.materialIndex;
+  saved_.pop_back();
+}
+
+PrimitiveRef SceneBuilder::polygon(std::span<const Vec3> vertices, std::uint32_t material,
+                                   Origin origin) {
+  Polygon p = makePolygon(vertices);
+  p.firstVertex = std::uint32_t(scene_.polygonVertices.size());
+  p.material = material;
+  p.origin = origin;
+  if (p.vertexCount >= kIndexedPolygonVertices) {
+    p.edgeIndex = std::uint32_t(scene_.polygonEdgeIndices.size());
+    scene_.polygonEdgeIndices.emplace_back(vertices, polygonAxes(p).u, polygonAxes(p).v);
+  }
+  scene_.polygonVertices.insert(scene_.polygonVertices.end(), vertices.begin(), vertices.end());
+  scene_.shapes<Polygon>().push_back(p);
+  return inGroup({kindOf<Polygon>, std::uint32_t(scene_.shapes<Polygon>().size() - 1)});
+}
+
+PrimitiveRef SceneBuilder::triangle(const std::array<Vec3, 3>& vertices,
+                                    const std::array<Vec3, 3>* normals, std::uint32_t material,
+                                    Origin origin) {
+  Triangle t;
+  for (std::size_t i = 0; i < 3; ++i) {
+    t.vertex[i] = std::uint32_t(scene_.meshVertices.size());
+    scene_.meshVertices.push_back(vertices[i]);
+    if (normals != nullptr) {
+      t.normal[i] = std::uint32_t(scene_.meshNormals.size());
+      scene_.meshNormals.push_back((*normals)[i]);
+    }
+  }
+  t.material = material;
+  t.origin = origin;
+  scene_.shapes<Triangle>().push_back(t);
+  return inGroup({kindOf<Triangle>, std::uint32_t(scene_.shapes<Triangle>().size() - 1)});
+}
+
+std::optional<PrimitiveRef> SceneBuilder::meshTriangle(std::array<std::uint32_t, 3> vertex,
+                                                       const std::array<std::uint32_t, 3>* normals,
+                                                       std::uint32_t material, Origin origin) {
+  const Vec3& a = scene_.meshVertices[vertex[0]];
+  const Vec3& b = scene_.meshVertices[vertex[1]];
+  const Vec3& c = scene_.meshVertices[vertex[2]];
+  if (triangleProblem(a, b, c)) return std::nullopt;
+  Triangle t;
+  t.vertex = vertex;
+  if (normals != nullptr) {
+    t.normal = *normals;
+    const Vec3 face = glm::cross(b - a, c - a);
+    const Vec3 sum = scene_.meshNormals[t.normal[0]] + scene_.meshNormals[t.normal[1]] +
+                     scene_.meshNormals[t.normal[2]];
+    if (glm::dot(face, sum) < 0.0) {
+      std::swap(t.vertex[1], t.vertex[2]);
+      std::swap(t.normal[1], t.normal[2]);
+    }
+  }
+  t.material = material;
+  t.origin = origin;
+  scene_.shapes<Triangle>().push_back(t);
+  return inGroup({kindOf<Triangle>, std::uint32_t(scene_.shapes<Triangle>().size() - 1)});
+}
+
+std::uint32_t SceneBuilder::addFile(std::string name) {
+  scene_.files.push_back(std::move(name));
+  return std::uint32_t(scene_.files.size() - 1);
+}
+
+} // namespace prism

@@ -1,0 +1,124 @@
+// The one way to add to a Scene: the .sc parser, the NFF and OBJ readers, the
+// generators in tools/ and the tests all build scenes through it, so the
+// bookkeeping that must agree between them (materials interned in the order
+// of first use, every primitive in exactly one group, polygons with their
+// vertices and edge index, mesh triangles wound as their normals say) is
+// written once. It checks nothing about the input: readers report problems
+// in their own terms before they add.
+#pragma once
+
+#include "core/scene/material_table.h"
+#include "core/scene/scene.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+class SceneBuilder {
+public:
+  // Adds to `scene`, which may already hold materials, groups and primitives
+  // (a builder can continue what another started).
+  explicit SceneBuilder(Scene& scene) : scene_(scene), materials_(scene.materials) {}
+  SceneBuilder(const SceneBuilder&) = delete;
+  SceneBuilder& operator=(const SceneBuilder&) = delete;
+
+  Scene& scene() { return scene_; }
+
+  // --- Materials
+
+  // The index of `m` in the scene's one material table (see MaterialTable).
+  std::uint32_t material(const Material& m) { return materials_.intern(m); }
+
+  // The current material of readers that have one (.sc `surface`, NFF `f`).
+  // It is interned when a primitive first uses it, so a material no
+  // primitive uses takes no index.
+  void setMaterial(const Material& m) {
+    current_ = m;
+    currentIndex_.reset();
+  }
+  std::uint32_t currentMaterial() {
+    if (!currentIndex_) currentIndex_ = materials_.intern(current_);
+    return *currentIndex_;
+  }
+
+  // --- Groups (the push/pop hierarchy)
+
+  // Where primitives go: group 0, the top level, to begin with.
+  std::uint32_t group() const { return group_; }
+  // A new empty group below `parent`, not entered.
+  std::uint32_t addGroup(std::uint32_t parent, Origin origin = {});
+  // Makes `group` the current one (for generators that fill groups out of
+  // order). push and pop are unaffected.
+  void enter(std::uint32_t group) { group_ = group; }
+  // A new group below the current one, entered; the current group and
+  // material are saved for pop. Returns the new group.
+  std::uint32_t push(Origin origin);
+  // Back to the group and material of the matching push.
+  void pop();
+  // The pushes not yet popped.
+  std::size_t openPushes() const { return saved_.size(); }
+
+  // --- Primitives, each added to the current group
+
+  // A kind that needs none of the scene's arrays (sphere, ellipsoid, cone),
+  // with its material and origin already set.
+  template <class Kind>
+  requires SelfContainedShape<Kind> PrimitiveRef add(const Kind& shape) {
+    std::vector<Kind>& shapes = scene_.shapes<Kind>();
+    shapes.push_back(shape);
+    return inGroup({kindOf<Kind>, std::uint32_t(shapes.size() - 1)});
+  }
+
+  // A polygon whose vertices passed polygonProblem, with an edge index when
+  // it has many vertices.
+  PrimitiveRef polygon(std::span<const Vec3> vertices, std::uint32_t material, Origin origin);
+
+  // A triangle with vertices of its own (and, when `normals` is given, unit
+  // vertex normals of its own), in the order given: the caller has checked
+  // them with triangleProblem.
+  PrimitiveRef triangle(const std::array<Vec3, 3>& vertices, const std::array<Vec3, 3>* normals,
+                        std::uint32_t material, Origin origin);
+
+  // A triangle over three existing mesh vertices (and, when `normals` is
+  // given, three existing unit normals). When the vertex normals all lie on
+  // the other side of the face than its winding says, the winding is
+  // reversed: the normals are what the modeller saw, and the tracer's
+  // entering/leaving test must agree with them. Nothing (and no primitive)
+  // for a zero-area triangle.
+  std::optional<PrimitiveRef> meshTriangle(std::array<std::uint32_t, 3> vertex,
+                                           const std::array<std::uint32_t, 3>* normals,
+                                           std::uint32_t material, Origin origin);
+
+  // --- Lights and files
+
+  void addLight(const Light& light) { scene_.lights.push_back(light); }
+  // Appends a file name to Scene::files (the main file first); returns its
+  // index, for Origin::file.
+  std::uint32_t addFile(std::string name);
+
+private:
+  PrimitiveRef inGroup(PrimitiveRef ref) {
+    scene_.groups[group_].primitives.push_back(ref);
+    return ref;
+  }
+
+  struct Saved {
+    std::uint32_t group;
+    Material material;
+    std::optional<std::uint32_t> materialIndex;
+  };
+
+  Scene& scene_;
+  MaterialTable materials_;
+  Material current_;
+  std::optional<std::uint32_t> currentIndex_; // current_ interned, once a primitive used it
+  std::uint32_t group_ = 0;
+  std::vector<Saved> saved_;
+};
+
+} // namespace prism

@@ -313,18 +313,9 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
     } else {
       const std::uint32_t first = ref & kFirstMask;
       const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
-      for (std::uint32_t i = first; i < end; ++i) {
-        const PrimitiveRef prim = decodeRef(refs_[i]);
-        if (skip != nullptr && prim == *skip) continue;
-        double t;
-        if (intersectPrimitive(scene_, prim, ray, range, t)) {
-          if constexpr (AnyHit) {
-            if (hit != nullptr) *hit = {t, prim}; // the blocker, when asked for
-            return true;
-          }
-          keepNearest({t, prim}, found, *hit, range);
-        }
-      }
+      for (std::uint32_t i = first; i < end; ++i)
+        if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
+          return true;
     }
     // Next: the nearest waiting child that still starts before the nearest hit.
     if (!stack.pop(range.max, current)) return found;

@@ -149,18 +149,10 @@ bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
     if (!node.box.hit(ray, invDir, range, slack)) continue;
-    for (std::uint32_t i = 0; i < node.primCount; ++i) {
-      const PrimitiveRef& ref = prims_[node.primBegin + i];
-      if (skip != nullptr && ref == *skip) continue;
-      double t;
-      if (intersectPrimitive(scene_, ref, ray, range, t)) {
-        if constexpr (AnyHit) {
-          if (hit != nullptr) *hit = {t, ref}; // the blocker, when asked for
-          return true;
-        }
-        keepNearest({t, ref}, found, *hit, range);
-      }
-    }
+    for (std::uint32_t i = 0; i < node.primCount; ++i)
+      if (testLeafPrimitive<AnyHit>(scene_, prims_[node.primBegin + i], ray, range, skip, found,
+                                    hit))
+        return true;
     for (std::uint32_t i = 0; i < node.childCount; ++i)
       stack[top++] = children_[node.childBegin + i];
   }

@@ -10,6 +10,25 @@
 
 namespace prism {
 
+// One primitive met in a leaf during such a walk, `skip` passed over: an
+// any-hit walk returns true at the first hit (putting it in *hit when
+// asked); a closest-hit walk keeps the nearest in *hit, `found` and
+// range.max (keepNearest) and goes on.
+template <bool AnyHit>
+inline bool testLeafPrimitive(const Scene& scene, PrimitiveRef prim, const Ray& ray,
+                              Interval& range, const PrimitiveRef* skip, bool& found, Hit* hit) {
+  if (skip != nullptr && prim == *skip) return false;
+  double t;
+  if (!intersectPrimitive(scene, prim, ray, range, t)) return false;
+  if constexpr (AnyHit) {
+    if (hit != nullptr) *hit = {t, prim}; // the blocker, when asked for
+    return true;
+  } else {
+    keepNearest({t, prim}, found, *hit, range);
+    return false;
+  }
+}
+
 template <class Derived> class TraversalAccel : public Accel {
 public:
   bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit& hit) const final {

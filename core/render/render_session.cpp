@@ -149,30 +149,6 @@ void RenderSession::apply(const SessionEdit& edit) {
   startWorkers(onlyPass2 && pass1Complete);
 }
 
-void RenderSession::setSettings(const RenderSettings& settings) {
-  SessionEdit edit;
-  edit.settings = settings;
-  apply(edit);
-}
-
-void RenderSession::setLight(std::size_t index, const Light& light) {
-  SessionEdit edit;
-  edit.lights.emplace_back(index, light);
-  apply(edit);
-}
-
-void RenderSession::setAmbient(const Color& ambient) {
-  SessionEdit edit;
-  edit.ambient = ambient;
-  apply(edit);
-}
-
-void RenderSession::setCamera(const CameraSpec& camera) {
-  SessionEdit edit;
-  edit.camera = camera;
-  apply(edit);
-}
-
 void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel) {
   stopWorkers();
   accel_ = std::move(accel); // refers to *scene, so both change together

@@ -78,14 +78,16 @@ struct SessionImage {
 // exactly one level, so the levels together are pass 1, each centre traced once.
 bool isNewAtLevel(int x, int y, int level);
 
-// Several values changed at once, with one restart: a dragged light, an undo
-// that puts back a camera and two lights, a reload re-applying the user's
-// edits. Unset members stay as they are.
+// The one way to change the session: one value (a dragged light) or several
+// at once with one restart (an undo that puts back a camera and two lights, a
+// reload re-applying the user's edits). Unset members stay as they are; the
+// initialisers let a designated initialiser name only what changes:
+// apply({.ambient = Color(0.1)}). Later values (fog, textures) become members.
 struct SessionEdit {
-  std::optional<RenderSettings> settings;
-  std::optional<CameraSpec> camera;
-  std::optional<Color> ambient;
-  std::vector<std::pair<std::size_t, Light>> lights; // 0-based index, new value
+  std::optional<RenderSettings> settings{};
+  std::optional<CameraSpec> camera{};
+  std::optional<Color> ambient{};
+  std::vector<std::pair<std::size_t, Light>> lights{}; // 0-based index, new value
 
   bool empty() const { return !settings && !camera && !ambient && lights.empty(); }
 };
@@ -105,11 +107,6 @@ public:
   // (users see them from 1); one past the scene's lights throws
   // std::out_of_range before anything is stopped or changed.
   void apply(const SessionEdit& edit);
-  // One value each: apply() with that member set.
-  void setSettings(const RenderSettings& settings);
-  void setLight(std::size_t index, const Light& light);
-  void setAmbient(const Color& ambient);
-  void setCamera(const CameraSpec& camera);
   // A reloaded scene: new geometry with its hierarchy, built by
   // makeAccel(*scene, accelKind()) beforehand (on another thread: for 10^6
   // primitives that takes a second).

@@ -3,9 +3,8 @@
 // the passes, stopping drops unfinished tiles whole, keeping pass 1 traces
 // pass 2 only, and the reduction points sit between the passes where a
 // distributed executor needs them.
-#include "core/io/scene_loader.h"
 #include "core/render/pass_schedule.h"
-#include "core/render/renderer.h"
+#include "tests/render_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -18,19 +17,8 @@
 namespace prism {
 namespace {
 
-RenderSettings smallSettings() {
-  RenderSettings s;
-  s.width = 80;
-  s.height = 60;
-  s.maxDepth = 5;
-  s.thresh = 0.1;
-  s.threads = 2;
-  return s;
-}
-
-Scene shipped(const char* name) {
-  return loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + name);
-}
+using test::shipped;
+using test::smallSettings;
 
 // Runs the items one at a time on the calling thread, in the order given
 // (all items in reverse when none is), as `workerCount` workers taking turns.

@@ -3,6 +3,7 @@
 // and change only what they should, cancellation is prompt.
 #include "core/io/scene_parser.h"
 #include "core/render/render_session.h"
+#include "tests/render_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -13,19 +14,8 @@
 namespace prism {
 namespace {
 
-RenderSettings smallSettings() {
-  RenderSettings s;
-  s.width = 80;
-  s.height = 60;
-  s.maxDepth = 5;
-  s.thresh = 0.1;
-  s.threads = 2;
-  return s;
-}
-
-Scene shipped(const char* name) {
-  return loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + name);
-}
+using test::shipped;
+using test::smallSettings;
 
 RenderResult renderDirect(const Scene& scene, const RenderSettings& s) {
   const auto accel = makeAccel(scene, AccelKind::Groups);

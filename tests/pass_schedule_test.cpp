@@ -141,7 +141,7 @@ TEST(PassSchedule, TheSinkHearsEveryTileInTheOrderOfThePasses) {
   RayCounts sum;
   for (const TileSamples& tile : sink.tiles) {
     for (const Sample& sample : tile.samples)
-      ++(tile.pass == 1 ? centres : means)[sample.index];
+      ++(tile.pass == 1 ? centres : means)[film.index(sample.x, sample.y)];
     sum += tile.counts;
   }
   EXPECT_TRUE(std::all_of(centres.begin(), centres.end(), [](int n) { return n == 1; }));

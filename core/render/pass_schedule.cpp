@@ -13,22 +13,6 @@ bool isNewAtLevel(int x, int y, int level, int coarsest) {
   return level == coarsest || x % (2 * level) != 0 || y % (2 * level) != 0;
 }
 
-namespace {
-
-// A tile's samples into the film, all at once: the film never holds a part
-// of a tile, and a tile cancelled halfway is dropped whole.
-void store(const TileSamples& tile, Film& film) {
-  for (const Sample& sample : tile.samples) {
-    film.radiance[sample.index] = sample.radiance;
-    if (tile.pass == 1)
-      film.centre[sample.index] = sample.radiance;
-    else
-      film.supersampled[sample.index] = 1;
-  }
-}
-
-} // namespace
-
 PassSchedule::PassSchedule(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                            int coarsestLevel)
     : scene_(scene), accel_(accel), settings_(settings), coarsestLevel_(coarsestLevel),
@@ -58,10 +42,7 @@ public:
           for (int y = block.y0; y < block.y1; ++y)
             for (int x = block.x0; x < block.x1; ++x)
               if (isNewAtLevel(x, y, level, s_.coarsestLevel_)) pixels[n++] = {x, y};
-          Color colors[Accel::kMaxBundle];
-          tracePixelCentres(tracer, s_.camera_, std::span(pixels, n), colors, out.counts);
-          for (std::size_t i = 0; i < n; ++i)
-            out.samples.push_back({film_.index(pixels[i].x, pixels[i].y), toRgb(colors[i])});
+          tracePixelCentres(tracer, s_.camera_, std::span(pixels, n), out.samples, out.counts);
         });
   }
 
@@ -70,12 +51,8 @@ public:
   void antialias(double avgmax) {
     const RenderSettings& settings = s_.settings_;
     forEachTile(2, 1, 4, [&](Tracer& tracer, const Tile& block, TileSamples& out) {
-      for (int y = block.y0; y < block.y1; ++y)
-        for (int x = block.x0; x < block.x1; ++x)
-          if (needsSupersampling(film_, x, y, avgmax, settings.thresh))
-            out.samples.push_back(
-                {film_.index(x, y),
-                 supersamplePixel(tracer, s_.camera_, x, y, settings.jitter, out.counts)});
+      antialiasBlock(tracer, s_.camera_, block, film_, avgmax, settings.thresh, settings.jitter,
+                     out.samples, out.counts);
     });
   }
 
@@ -110,7 +87,9 @@ private:
             if (stopped()) return;
             sampleBlock(tracer, block, out);
           }
-          store(out, film_);
+          // All at once: the film never holds a part of a tile, and a
+          // tile stopped halfway is dropped whole.
+          (pass == 1 ? storeCentres : storeSupersampled)(out.samples, film_);
           counts_[std::size_t(worker)] += out.counts;
           sink_.tileDone(out);
         },

@@ -43,13 +43,6 @@ inline constexpr int kPreviewCoarsestLevel = 8;
 // traced once.
 bool isNewAtLevel(int x, int y, int level, int coarsest = kPreviewCoarsestLevel);
 
-// One sample of the final picture: a pixel centre (pass 1) or the mean of a
-// supersampled pixel's 16 sub-samples (pass 2).
-struct Sample {
-  std::size_t index; // Film::index(x, y)
-  Rgb radiance;
-};
-
 // What one tile produced in one pass (or coarse level): already in the film
 // when a sink sees it.
 struct TileSamples {

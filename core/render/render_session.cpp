@@ -212,10 +212,8 @@ private:
     for (const Sample& sample : tile.samples) {
       const Rgb& c = sample.radiance;
       work_.sumMax += double(std::max({c.r, c.g, c.b}));
-      const int x = int(sample.index % std::size_t(width));
-      const int y = int(sample.index / std::size_t(width));
-      for (int by = y; by < std::min(y + level, height); ++by) {
-        for (int bx = x; bx < std::min(x + level, width); ++bx) {
+      for (int by = sample.y; by < std::min(sample.y + level, height); ++by) {
+        for (int bx = sample.x; bx < std::min(sample.x + level, width); ++bx) {
           const std::size_t j = work_.film.index(bx, by);
           if (work_.displayLevel[j] <= level) continue; // a finer sample is shown
           work_.display[j] = c;
@@ -228,8 +226,9 @@ private:
 
   void showSupersampled(const TileSamples& tile) {
     for (const Sample& sample : tile.samples) {
-      work_.display[sample.index] = sample.radiance;
-      work_.displaySupersampled[sample.index] = 1;
+      const std::size_t i = work_.film.index(sample.x, sample.y);
+      work_.display[i] = sample.radiance;
+      work_.displaySupersampled[i] = 1;
     }
     work_.supersampled += (long long)tile.samples.size();
     ++work_.pass2TilesDone;

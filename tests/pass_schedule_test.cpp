@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -268,6 +269,15 @@ TEST(PassSchedule, IsNewAtLevelCoversEveryPixelOnceForAnyFirstLevel) {
   }
   EXPECT_TRUE(isNewAtLevel(2, 2, 1, 1)); // one level: every pixel
   EXPECT_FALSE(isNewAtLevel(2, 2, 1, 2));
+}
+
+TEST(PassSchedule, TheFirstLevelIsAPowerOfTwo) {
+  const Scene scene = shipped("chex.sc");
+  const auto accel = makeAccel(scene, AccelKind::Bvh);
+  for (int coarsest : {0, 3, 6, -8})
+    EXPECT_THROW(PassSchedule(scene, *accel, smallSettings(), coarsest), std::invalid_argument)
+        << coarsest;
+  EXPECT_NO_THROW(PassSchedule(scene, *accel, smallSettings(), 16));
 }
 
 } // namespace

@@ -5,19 +5,20 @@
 #include <algorithm>
 #include <functional>
 #include <span>
+#include <stdexcept>
+#include <string>
 
 namespace prism {
-
-bool isNewAtLevel(int x, int y, int level, int coarsest) {
-  if (x % level != 0 || y % level != 0) return false;
-  return level == coarsest || x % (2 * level) != 0 || y % (2 * level) != 0;
-}
 
 PassSchedule::PassSchedule(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                            int coarsestLevel)
     : scene_(scene), accel_(accel), settings_(settings), coarsestLevel_(coarsestLevel),
       camera_(scene.camera, settings.width, settings.height),
-      tiles_(makeTiles(settings.width, settings.height, settings.tileSize)) {}
+      tiles_(makeTiles(settings.width, settings.height, settings.tileSize)) {
+  if (coarsestLevel < 1 || (coarsestLevel & (coarsestLevel - 1)) != 0)
+    throw std::invalid_argument("the first level of a pass schedule must be a power of two, not " +
+                                std::to_string(coarsestLevel));
+}
 
 class PassSchedule::Run {
 public:

@@ -40,8 +40,12 @@ inline constexpr int kPreviewCoarsestLevel = 8;
 // schedule whose first level is `coarsest` (levels halve down to 1, all powers
 // of two): it lies on that level's grid and on no coarser one. Every pixel is
 // new at exactly one level, so the levels together are pass 1, each centre
-// traced once.
-bool isNewAtLevel(int x, int y, int level, int coarsest = kPreviewCoarsestLevel);
+// traced once. Bit tests rather than remainders: it runs for every pixel of
+// pass 1, and the levels are powers of two.
+inline bool isNewAtLevel(int x, int y, int level, int coarsest = kPreviewCoarsestLevel) {
+  if (((x | y) & (level - 1)) != 0) return false;     // off this level's grid
+  return level == coarsest || ((x | y) & level) != 0; // the first, or off the coarser grid
+}
 
 // What one tile produced in one pass (or coarse level): already in the film
 // when a sink sees it.
@@ -77,8 +81,9 @@ class PassSchedule {
 public:
   // Over `scene` with `settings` (size, depth, threshold, jitter, tile size;
   // not the thread count, which is the executor's business). `coarsestLevel`:
-  // the side of the first level's blocks, a power of two; 1 traces pass 1 in
-  // one go, in the bundles render() has always traced.
+  // the side of the first level's blocks, a power of two (else
+  // std::invalid_argument); 1 traces pass 1 in one go, in the bundles
+  // render() has always traced.
   PassSchedule(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                int coarsestLevel = 1);
 

@@ -59,7 +59,7 @@ void benchLatency(const LatencyOptions& o) {
     for (int i = 0; i < o.moves; ++i) {
       light.position.x += (i % 2 == 0 ? 0.05 : -0.05);
       const auto start = Clock::now();
-      session.setLight(0, light);
+      session.apply({.lights = {{0, light}}});
       edit.push_back(millisecondsSince(start));
       waitUntil(session, [](const SessionProgress& p) {
         return p.phase != SessionPhase::Coarse || p.level < 8;

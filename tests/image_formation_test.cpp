@@ -163,22 +163,30 @@ TEST(SupersamplePixel, JitterStaysInsideCellsAndIsDeterministic) {
   EXPECT_FLOAT_EQ(a.r * 16.0f, std::round(a.r * 16.0f));
 }
 
-TEST(AntialiasTile, SupersamplesOnlyPixelsAtTheEdgeAndKeepsPassOne) {
+TEST(AntialiasBlock, SupersamplesOnlyPixelsAtTheEdgeAndKeepsPassOne) {
   HalfPlaneScene s(worldX(2.3)); // edge inside pixel column 2
   Tracer tracer(s.scene, *s.accel, 1);
   const Camera camera(s.scene.camera, 4, 4);
   Film film(4, 4);
   RayCounts counts;
   const Tile all{0, 0, 4, 4};
-  tracePixelCentres(tracer, camera, all, film, counts);
+  std::vector<Pixel> pixels;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x)
+      pixels.push_back({x, y});
+  std::vector<Sample> centres;
+  tracePixelCentres(tracer, camera, pixels, centres, counts);
+  storeCentres(centres, film);
   EXPECT_EQ(counts.eyePrimary, 16u);
   // Centres at sx = 0.5, 1.5 are black, 2.5 and 3.5 white.
   EXPECT_EQ(film.centre[film.index(1, 0)], Rgb(0.0f));
   EXPECT_EQ(film.centre[film.index(2, 0)], Rgb(1.0f));
   const double avgmax = averageMax(film.centre);
   EXPECT_DOUBLE_EQ(avgmax, 0.5);
-  const int n = antialiasTile(tracer, camera, all, avgmax, 0.1, false, film, counts);
-  EXPECT_EQ(n, 8); // columns 1 and 2, every row
+  std::vector<Sample> means;
+  antialiasBlock(tracer, camera, all, film, avgmax, 0.1, false, means, counts);
+  storeSupersampled(means, film);
+  EXPECT_EQ(means.size(), 8u); // columns 1 and 2, every row
   EXPECT_EQ(counts.eyeAntialias, 16u * 8u);
   for (int y = 0; y < 4; ++y) {
     EXPECT_EQ(film.supersampled[film.index(0, y)], 0);

@@ -3,6 +3,7 @@
 // and change only what they should, cancellation is prompt.
 #include "core/io/scene_parser.h"
 #include "core/render/render_session.h"
+#include "tests/render_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -13,19 +14,8 @@
 namespace prism {
 namespace {
 
-RenderSettings smallSettings() {
-  RenderSettings s;
-  s.width = 80;
-  s.height = 60;
-  s.maxDepth = 5;
-  s.thresh = 0.1;
-  s.threads = 2;
-  return s;
-}
-
-Scene shipped(const char* name) {
-  return loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + name);
-}
+using test::shipped;
+using test::smallSettings;
 
 RenderResult renderDirect(const Scene& scene, const RenderSettings& s) {
   const auto accel = makeAccel(scene, AccelKind::Groups);
@@ -105,7 +95,7 @@ TEST(RenderSession, MovingALightChangesExactlyWhereThatLightReaches) {
 
   Light moved = scene.lights[0];
   moved.position = glm::dvec3(-5, 2, 3);
-  session.setLight(0, moved);
+  session.apply({.lights = {{0, moved}}});
   EXPECT_EQ(session.progress().restarts, 1u);
   const RenderResult after = session.waitForResult();
 
@@ -143,13 +133,13 @@ TEST(RenderSession, ThresholdChangeKeepsPassOneAndRedoesOnlyPassTwo) {
   RenderSession session(scene, s);
   const RenderResult first = session.waitForResult();
   s.thresh = 0.02;
-  session.setSettings(s);
+  session.apply({.settings = s});
   const RenderResult second = session.waitForResult();
   expectSameFilm(second, renderDirect(scene, s));
   EXPECT_GT(second.supersampledPixels, first.supersampledPixels);
   EXPECT_EQ(second.counts.eyePrimary, 80u * 60u); // pass 1 was kept, not retraced
   s.maxDepth = 2;                                 // depth changes every sample
-  session.setSettings(s);
+  session.apply({.settings = s});
   expectSameFilm(session.waitForResult(), renderDirect(scene, s));
 }
 
@@ -160,8 +150,8 @@ TEST(RenderSession, CameraAndAmbientEditsRestartWithTheEditedScene) {
   Scene edited = scene;
   edited.ambient = Color(0.3, 0.2, 0.1);
   edited.camera.eye += glm::dvec3(1.0, 0.5, 0.0);
-  session.setAmbient(edited.ambient);
-  session.setCamera(edited.camera);
+  session.apply({.ambient = edited.ambient});
+  session.apply({.camera = edited.camera});
   expectSameFilm(session.waitForResult(), renderDirect(edited, s));
   EXPECT_EQ(session.progress().restarts, 2u);
 }
@@ -235,7 +225,7 @@ TEST(RenderSession, CancellationIsPromptComparedWithTheRenderItStops) {
   while (session.progress().pass1Pixels == 0)
     std::this_thread::yield();
   const auto cancelStart = Clock::now();
-  session.setAmbient(Color(0.1)); // cancels, joins the workers, restarts
+  session.apply({.ambient = Color(0.1)}); // cancels, joins the workers, restarts
   const double cancelSeconds = std::chrono::duration<double>(Clock::now() - cancelStart).count();
   EXPECT_LT(cancelSeconds, 0.25 * fullSeconds)
       << "cancel took " << cancelSeconds << " s; a full render takes " << fullSeconds << " s";

@@ -143,10 +143,10 @@ TEST(ViewController, OpensAnotherSceneAFreshStart) {
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
   CameraSpec moved = c.scene().camera;
   moved.eye += Vec3(1.0, 0.0, 0.0);
-  c.setCamera(moved);
+  c.apply(CameraEdit{moved});
   RenderSettings deeper = c.settings();
   deeper.maxDepth = 3;
-  c.setSettings(deeper);
+  c.apply(SettingsEdit{deeper});
   ASSERT_TRUE(c.canUndo());
   writeFile(dir / "other.sc", "eye 0 0 9\nlight 1 1 1 5 5 5\nlight 2 2 2 5 5 5\n"
                               "light 3 3 3 5 5 5\nsphere 0 0 0 1\n");
@@ -198,10 +198,10 @@ TEST(ViewController, ResetCameraGoesBackToTheFile) {
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
   CameraSpec moved = scene.camera;
   moved.eye = Vec3(4, 4, 4);
-  c.setCamera(moved);
+  c.apply(CameraEdit{moved});
   EXPECT_FALSE(c.snapshotCurrent());
   EXPECT_EQ(c.scene().camera.eye, Vec3(4, 4, 4));
-  c.resetCamera();
+  c.apply(ResetCamera{});
   EXPECT_EQ(c.scene().camera.eye, scene.camera.eye);
   c.update();
   EXPECT_TRUE(c.snapshotCurrent());
@@ -253,14 +253,14 @@ TEST(ViewControllerUndo, UndoAndRedoRestoreExactValuesAndRestartTheRender) {
   Light moved = scene.lights[0];
   moved.position = Vec3(-2.5, 3.25, 1.125);
   moved.intensity = Color(10, 20, 30);
-  c.setLight(0, moved);
+  c.apply(LightEdit{0, moved});
   expectRestarted(c, restarts);
   const CameraSpec orbited = orbit(scene.camera, 30.0, 10.0);
-  c.setCamera(orbited);
+  c.apply(CameraEdit{orbited});
   expectRestarted(c, restarts);
   RenderSettings deeper = c.settings();
   deeper.maxDepth = 1;
-  c.setSettings(deeper);
+  c.apply(SettingsEdit{deeper});
   expectRestarted(c, restarts);
 
   ASSERT_TRUE(c.undo()); // the depth
@@ -299,12 +299,12 @@ TEST(ViewControllerUndo, ANewEditDropsWhatCouldBeRedone) {
   ScratchDir dir;
   const Scene scene = writeMainScene(dir);
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
-  c.setAmbient(Color(0.1));
-  c.setAmbient(Color(0.2));
+  c.apply(AmbientEdit{Color(0.1)});
+  c.apply(AmbientEdit{Color(0.2)});
   ASSERT_TRUE(c.undo());
   EXPECT_EQ(c.scene().ambient, Color(0.1));
   EXPECT_TRUE(c.canRedo());
-  c.setAmbient(Color(0.3));
+  c.apply(AmbientEdit{Color(0.3)});
   EXPECT_FALSE(c.canRedo());
   EXPECT_FALSE(c.redo());
   ASSERT_TRUE(c.undo());
@@ -312,7 +312,7 @@ TEST(ViewControllerUndo, ANewEditDropsWhatCouldBeRedone) {
   // An edit that changes nothing is no step and no restart.
   c.update();
   const std::uint64_t restarts = c.progress().restarts;
-  c.setAmbient(Color(0.1));
+  c.apply(AmbientEdit{Color(0.1)});
   EXPECT_TRUE(c.snapshotCurrent());
   EXPECT_TRUE(c.canRedo()); // still there
   c.update();
@@ -324,7 +324,7 @@ TEST(ViewControllerUndo, ADragIsOneStep) {
   ScratchDir dir;
   const Scene scene = writeMainScene(dir);
   ViewController c(scene, optionsFor(scene, dir / "main.sc"));
-  c.setAmbient(Color(0.05)); // a step before the drags
+  c.apply(AmbientEdit{Color(0.05)}); // a step before the drags
 
   // A mouse drag: one camera edit per frame.
   c.beginGesture();
@@ -332,7 +332,7 @@ TEST(ViewControllerUndo, ADragIsOneStep) {
   CameraSpec camera = scene.camera;
   for (int frame = 0; frame < 40; ++frame) {
     camera = orbit(camera, 2.0, 0.5);
-    c.setCamera(camera);
+    c.apply(CameraEdit{camera});
     c.update();
   }
   c.endGesture();
@@ -343,7 +343,7 @@ TEST(ViewControllerUndo, ADragIsOneStep) {
   for (int frame = 0; frame < 25; ++frame) {
     light.position.x += 0.1;
     light.intensity *= 1.01;
-    c.setLight(0, light);
+    c.apply(LightEdit{0, light});
   }
   c.endGesture();
 
@@ -364,8 +364,8 @@ TEST(ViewControllerUndo, ADragIsOneStep) {
   c.beginGesture();
   Light away = light;
   away.position.y += 5.0;
-  c.setLight(0, away);
-  c.setLight(0, light);
+  c.apply(LightEdit{0, away});
+  c.apply(LightEdit{0, light});
   c.endGesture();
   EXPECT_FALSE(c.canRedo());
   ASSERT_TRUE(c.undo());
@@ -373,11 +373,11 @@ TEST(ViewControllerUndo, ADragIsOneStep) {
 
   // Undo in the middle of a drag: the rest of the drag is a new step.
   c.beginGesture();
-  c.setAmbient(Color(0.5));
+  c.apply(AmbientEdit{Color(0.5)});
   ASSERT_TRUE(c.undo());
   EXPECT_EQ(c.scene().ambient, Color(0.05));
-  c.setAmbient(Color(0.6));
-  c.setAmbient(Color(0.7));
+  c.apply(AmbientEdit{Color(0.6)});
+  c.apply(AmbientEdit{Color(0.7)});
   c.endGesture();
   ASSERT_TRUE(c.undo());
   EXPECT_EQ(c.scene().ambient, Color(0.05));
@@ -392,7 +392,7 @@ TEST(ViewControllerUndo, TheHistoryIsBounded) {
   ViewController c(scene, options);
   const int edits = int(ViewController::kMaxUndoSteps) + 5;
   for (int i = 1; i <= edits; ++i)
-    c.setAmbient(Color(0.001 * i));
+    c.apply(AmbientEdit{Color(0.001 * i)});
   std::size_t undone = 0;
   while (c.undo())
     ++undone;
@@ -409,18 +409,18 @@ TEST(ViewControllerUndo, ResetsAreUndoableEdits) {
   Light a = scene.lights[0], b = scene.lights[1];
   a.position = Vec3(0, 4, 0);
   b.intensity = Color(1, 2, 3);
-  c.setLight(0, a);
-  c.setLight(1, b);
+  c.apply(LightEdit{0, a});
+  c.apply(LightEdit{1, b});
   const CameraSpec zoomed = zoom(scene.camera, 0.5);
-  c.setCamera(zoomed);
-  c.setAmbient(Color(0.2));
+  c.apply(CameraEdit{zoomed});
+  c.apply(AmbientEdit{Color(0.2)});
   EXPECT_EQ(c.edits().names(),
             (std::vector<std::string>{"camera", "ambient", "light 1", "light 2"}));
 
-  c.resetLight(1);
+  c.apply(ResetLight{1});
   EXPECT_TRUE(sameLight(c.scene().lights[1], scene.lights[1]));
   EXPECT_TRUE(sameLight(c.scene().lights[0], a)); // the other light stays edited
-  c.resetCamera();
+  c.apply(ResetCamera{});
   EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
   ASSERT_TRUE(c.undo());
   EXPECT_TRUE(sameCamera(c.scene().camera, zoomed));
@@ -429,8 +429,8 @@ TEST(ViewControllerUndo, ResetsAreUndoableEdits) {
 
   RenderSettings s = c.settings();
   s.thresh = 0.25;
-  c.setSettings(s);
-  c.revertToFile();
+  c.apply(SettingsEdit{s});
+  c.apply(RevertToFile{});
   EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
   EXPECT_EQ(c.scene().ambient, scene.ambient);
   EXPECT_TRUE(sameLight(c.scene().lights[0], scene.lights[0]));
@@ -444,7 +444,7 @@ TEST(ViewControllerUndo, ResetsAreUndoableEdits) {
   EXPECT_EQ(c.scene().ambient, Color(0.2));
 
   // An edit of a light the scene does not have is refused, and changes nothing.
-  EXPECT_THROW(c.setLight(2, a), std::out_of_range);
+  EXPECT_THROW(c.apply(LightEdit{2, a}), std::out_of_range);
   EXPECT_TRUE(sameLight(c.scene().lights[1], b));
   ASSERT_TRUE(c.redo());
   EXPECT_FALSE(c.canRedo());
@@ -473,14 +473,14 @@ TEST(ViewControllerReload, KeepsEditsWhoseValuesStillExistAndDropsTheOthers) {
   Light second = scene.lights[1];
   second.position = Vec3(-1, 6, 2);
   const CameraSpec orbited = orbit(scene.camera, -20.0, 15.0);
-  c.setLight(1, second);
-  c.setCamera(orbited);
-  c.setAmbient(Color(0.1, 0.2, 0.3));
+  c.apply(LightEdit{1, second});
+  c.apply(CameraEdit{orbited});
+  c.apply(AmbientEdit{Color(0.1, 0.2, 0.3)});
   RenderSettings s = c.settings();
   s.maxDepth = 2;
   s.thresh = 0.3;
   s.jitter = true;
-  c.setSettings(s);
+  c.apply(SettingsEdit{s});
 
   // The file now has one light, at a new place: light 2's edit has nothing to
   // go on; the camera, the ambient and the settings stay.
@@ -522,7 +522,7 @@ TEST(ViewControllerReload, KeepsEditsWhoseValuesStillExistAndDropsTheOthers) {
   // goes to the file's new one.
   Light first = c.scene().lights[0];
   first.intensity = Color(50, 5, 5);
-  c.setLight(0, first);
+  c.apply(LightEdit{0, first});
   writeFile(dir / "lights.sc", "light 3 3 3 20 20 20\nlight 0 9 0 1 1 1\n");
   reloadUntil(c, 2);
   EXPECT_EQ(c.keptEdits().kept, (std::vector<std::string>{"camera", "ambient", "light 1"}));
@@ -530,11 +530,11 @@ TEST(ViewControllerReload, KeepsEditsWhoseValuesStillExistAndDropsTheOthers) {
   ASSERT_EQ(c.scene().lights.size(), 2u);
   EXPECT_TRUE(sameLight(c.scene().lights[0], first));
   EXPECT_EQ(c.scene().lights[1].position, Vec3(0, 9, 0));
-  c.resetLight(0);
+  c.apply(ResetLight{0});
   EXPECT_EQ(c.scene().lights[0].position, Vec3(3, 3, 3));
 
   // Revert to the file: the re-read file's values; undoable.
-  c.revertToFile();
+  c.apply(RevertToFile{});
   EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
   EXPECT_EQ(c.scene().ambient, scene.ambient);
   EXPECT_EQ(c.settings().maxDepth, 2); // the settings stay
@@ -559,7 +559,7 @@ TEST(ViewControllerReload, ACommandLineCameraIsAnEditOverTheFile) {
   reloadUntil(c, 2);
   EXPECT_EQ(c.keptEdits().kept, std::vector<std::string>{"camera"});
   EXPECT_TRUE(sameCamera(c.scene().camera, given));
-  c.resetCamera();
+  c.apply(ResetCamera{});
   EXPECT_TRUE(sameCamera(c.scene().camera, scene.camera));
   ASSERT_TRUE(c.undo());
   EXPECT_TRUE(sameCamera(c.scene().camera, given));
@@ -578,9 +578,9 @@ TEST(ViewControllerSaveScene, WritesTheEditedSceneThatRendersTheSamePicture) {
   Light light = scene.lights[0];
   light.position = Vec3(-1.0 / 3.0, 2.5, 1e-3);
   light.intensity = Color(12.5, 7.0, 3.0);
-  c.setCamera(camera);
-  c.setLight(0, light);
-  c.setAmbient(Color(0.05, 0.04, 0.03));
+  c.apply(CameraEdit{camera});
+  c.apply(LightEdit{0, light});
+  c.apply(AmbientEdit{Color(0.05, 0.04, 0.03)});
 
   const fs::path saved = dir / "sub" / "view.sc";
   fs::create_directory(dir / "sub");

@@ -111,7 +111,7 @@ void navigateWithMouse(ViewController& c, const ImageLayout& l, WindowState& sta
         if (io.KeyCtrl) { // the picture: zoom about the pointer
           zoomPicture(state, l, std::pow(kPictureZoomPerStep, io.MouseWheel), io.MousePos);
         } else { // the camera: toward or away from lookat
-          c.setCamera(zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel))));
+          c.apply(CameraEdit{zoom(camera, std::pow(kZoomPerWheelStep, double(io.MouseWheel)))});
         }
       }
       return;
@@ -132,9 +132,9 @@ void navigateWithMouse(ViewController& c, const ImageLayout& l, WindowState& sta
           glm::vec2(float(dx) / float(l.imageWidth), float(dy) / float(l.imageHeight));
     } else if (drag.button == ImGuiMouseButton_Left && !io.KeyShift) {
       // Dragging right turns the scene right: the eye goes the other way.
-      c.setCamera(orbit(camera, -dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel));
+      c.apply(CameraEdit{orbit(camera, -dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel)});
     } else {
-      c.setCamera(pan(camera, dx, dy, c.settings().height));
+      c.apply(CameraEdit{pan(camera, dx, dy, c.settings().height)});
     }
     drag.pending = glm::dvec2(0.0);
   }

@@ -81,7 +81,7 @@ void sceneSection(ViewController& c, WindowState& state) {
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
-  if (ui::button("Back to the file's values")) c.revertToFile();
+  if (ui::button("Back to the file's values")) c.apply(RevertToFile{});
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the camera, the lights and ambient as the scene file says (undoable)");
   if (c.reloading()) dimText("Reading the scene files...");
@@ -109,7 +109,7 @@ void renderSection(ViewController& c, WindowState& state) {
   }
   changed |= ui::checkbox("jitter sub-samples", &s.jitter);
   dimText("image " + std::to_string(s.width) + " x " + std::to_string(s.height));
-  if (changed) edit(c, state, [&] { c.setSettings(s); });
+  if (changed) edit(c, state, [&] { c.apply(SettingsEdit{s}); });
 }
 
 void lightsSection(ViewController& c, WindowState& state) {
@@ -117,7 +117,7 @@ void lightsSection(ViewController& c, WindowState& state) {
   Color ambient = scene.ambient;
   if (ui::dragDoubles("ambient", &ambient[0], 3, dragSpeed(std::max(0.05, maxComponent(ambient))),
                       "%.3f")) {
-    edit(c, state, [&] { c.setAmbient(glm::max(ambient, Color(0.0))); });
+    edit(c, state, [&] { c.apply(AmbientEdit{glm::max(ambient, Color(0.0))}); });
   }
   const double extent = glm::length(scene.camera.eye - scene.camera.lookat);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -127,7 +127,8 @@ void lightsSection(ViewController& c, WindowState& state) {
     bool changed = ui::dragDoubles(label.c_str(), &light.position[0], 3, dragSpeed(extent), "%.2f");
     const double peak = std::max(1e-9, maxComponent(light.intensity));
     if (ui::dragDoubles("##intensity", &light.intensity[0], 3, dragSpeed(peak), "%.2f")) {
-      light.intensity = glm::max(light.intensity, Color(0.0)); // never negative (docs/scene-language.md)
+      light.intensity =
+          glm::max(light.intensity, Color(0.0)); // never negative (docs/scene-language.md)
       changed = true;
     }
     // The intensity's hue, at full brightness, in place of a label.
@@ -137,8 +138,8 @@ void lightsSection(ViewController& c, WindowState& state) {
     ImGui::ColorButton("##colour", swatch, ImGuiColorEditFlags_NoTooltip, ImVec2(12.0f, 12.0f));
     ImGui::SameLine(0.0f, 4.0f);
     ImGui::TextUnformatted("intensity");
-    if (changed) edit(c, state, [&] { c.setLight(i, light); });
-    if (ui::button("reset")) c.resetLight(i);
+    if (changed) edit(c, state, [&] { c.apply(LightEdit{i, light}); });
+    if (ui::button("reset")) c.apply(ResetLight{i});
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the file's position and intensity");
   }
 }
@@ -164,8 +165,8 @@ void cameraSection(ViewController& c, WindowState& state) {
   }
   // An edit that would leave no view (eye on lookat, up along the view) is
   // not applied.
-  if (changed && usable(cam)) edit(c, state, [&] { c.setCamera(cam); });
-  if (ui::button("Reset camera (Home)")) c.resetCamera();
+  if (changed && usable(cam)) edit(c, state, [&] { c.apply(CameraEdit{cam}); });
+  if (ui::button("Reset camera (Home)")) c.apply(ResetCamera{});
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene file's camera");
   dimText("On the picture: drag to orbit, right-drag or shift-drag to pan, wheel to zoom.");
 }
@@ -498,7 +499,7 @@ void handleShortcuts(ViewController& c, WindowState& state) {
   if (pressed(GLFW_KEY_E)) state.exposure.setLocked(!state.exposure.locked());
   if (pressed(GLFW_KEY_TAB)) state.panelVisible = !state.panelVisible;
   if (pressed(GLFW_KEY_F1)) state.showHelp = !state.showHelp;
-  if (pressed(GLFW_KEY_HOME)) c.resetCamera();
+  if (pressed(GLFW_KEY_HOME)) c.apply(ResetCamera{});
   if (pressed(GLFW_KEY_F)) state.picture.fit = true;
   if (pressed(GLFW_KEY_1)) setPictureActualSize(state);
   if (pressed(GLFW_KEY_P)) pinRender(c, state);

@@ -443,22 +443,25 @@ void ViewApp::start(const ScriptAction& a) {
   case ScriptOp::Frames: framesAtStart_ = frameNumber_; break;
   case ScriptOp::Depth:
   case ScriptOp::Thresh:
-  case ScriptOp::Jitter: controller_->setSettings(edited(a)); break;
-  case ScriptOp::Ambient: controller_->setAmbient(vec(0)); break;
+  case ScriptOp::Jitter: controller_->apply(SettingsEdit{edited(a)}); break;
+  case ScriptOp::Ambient: controller_->apply(AmbientEdit{vec(0)}); break;
   case ScriptOp::Light:
   case ScriptOp::Intensity: {
     const std::size_t i = lightIndex(a);
     Light light = controller_->scene().lights[i];
     (a.op == ScriptOp::Light ? light.position : light.intensity) = vec(0);
-    controller_->setLight(i, light);
+    controller_->apply(LightEdit{i, light});
     break;
   }
-  case ScriptOp::Orbit: controller_->setCamera(orbit(camera, a.values[0], a.values[1])); break;
-  case ScriptOp::Pan:
-    controller_->setCamera(pan(camera, a.values[0], a.values[1], controller_->settings().height));
+  case ScriptOp::Orbit:
+    controller_->apply(CameraEdit{orbit(camera, a.values[0], a.values[1])});
     break;
-  case ScriptOp::Zoom: controller_->setCamera(zoom(camera, a.values[0])); break;
-  case ScriptOp::Reset: controller_->resetCamera(); break;
+  case ScriptOp::Pan:
+    controller_->apply(
+        CameraEdit{pan(camera, a.values[0], a.values[1], controller_->settings().height)});
+    break;
+  case ScriptOp::Zoom: controller_->apply(CameraEdit{zoom(camera, a.values[0])}); break;
+  case ScriptOp::Reset: controller_->apply(ResetCamera{}); break;
   case ScriptOp::Overlay: state_.overlay = a.values[0] != 0.0; break;
   case ScriptOp::Markers: state_.markers = a.values[0] != 0.0; break;
   case ScriptOp::Exposure: state_.exposure.setLocked(a.values[0] != 0.0); break;

@@ -204,7 +204,7 @@ void ViewController::install(LoadedScene loaded) {
 
   const RenderSettings& s = current().settings;
   if (s.width != session_->settings().width || s.height != session_->settings().height)
-    session_->setSettings(s);
+    session_->apply({.settings = s});
   session_->setScene(std::move(loaded.scene), std::move(loaded.accel));
   stale_ = true;
   ++successfulReloads_;

@@ -42,19 +42,14 @@ public:
   ViewController(Scene scene, const ViewOptions& options, std::vector<std::string> warnings = {});
   ~ViewController(); // waits for a reload or a scene save in progress
 
-  // Edits. Every change of a value goes through apply(): it cancels the work
-  // in flight and restarts refinement (an edit that changes nothing does
-  // neither), and becomes one undo step. A LightEdit of a light the scene
-  // does not have throws std::out_of_range.
+  // Edits. Every change of a value goes through apply(), with one of the
+  // SceneEdit alternatives (viewer/scene_edit.h: SettingsEdit, LightEdit,
+  // AmbientEdit, CameraEdit, and the resets ResetLight, ResetCamera,
+  // RevertToFile), whoever makes it: a panel, the mouse, a script. It cancels
+  // the work in flight and restarts refinement (an edit that changes nothing
+  // does neither), and becomes one undo step. A LightEdit of a light the
+  // scene does not have throws std::out_of_range.
   void apply(const SceneEdit& edit);
-  // One-line wrappers of apply(), for callers that edit one value.
-  void setSettings(const RenderSettings& settings) { apply(SettingsEdit{settings}); }
-  void setLight(std::size_t index, const Light& light) { apply(LightEdit{index, light}); }
-  void setAmbient(const Color& ambient) { apply(AmbientEdit{ambient}); }
-  void setCamera(const CameraSpec& camera) { apply(CameraEdit{camera}); }
-  void resetCamera() { apply(ResetCamera{}); }                     // back to the file's camera
-  void resetLight(std::size_t index) { apply(ResetLight{index}); } // back to the file's light
-  void revertToFile() { apply(RevertToFile{}); } // every scene value; the render settings stay
 
   // Undo and redo (Ctrl+Z, Ctrl+Shift+Z) step through the states the edits
   // made, restarting the render like any edit; a new edit drops what could be

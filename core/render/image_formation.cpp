@@ -32,29 +32,15 @@ std::vector<Tile> makeTiles(int width, int height, int size) {
 }
 
 void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pixel> pixels,
-                       std::span<Color> out, RayCounts& counts) {
+                       std::vector<Sample>& out, RayCounts& counts) {
   Ray rays[Accel::kMaxBundle];
   for (std::size_t i = 0; i < pixels.size(); ++i)
     rays[i] = camera.eyeRay(pixels[i].x + 0.5, pixels[i].y + 0.5);
   counts.eyePrimary += (long long)pixels.size();
-  tracer.traceBundle(std::span(rays, pixels.size()), out.first(pixels.size()), counts);
-}
-
-void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
-                       RayCounts& counts) {
-  for (const Tile& block : splitTile(tile, kBundleSide)) {
-    Pixel pixels[Accel::kMaxBundle];
-    std::size_t n = 0;
-    for (int y = block.y0; y < block.y1; ++y)
-      for (int x = block.x0; x < block.x1; ++x)
-        pixels[n++] = {x, y};
-    Color colors[Accel::kMaxBundle];
-    tracePixelCentres(tracer, camera, std::span(pixels, n), colors, counts);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t index = film.index(pixels[i].x, pixels[i].y);
-      film.centre[index] = film.radiance[index] = toRgb(colors[i]);
-    }
-  }
+  Color colors[Accel::kMaxBundle];
+  tracer.traceBundle(std::span(rays, pixels.size()), std::span(colors, pixels.size()), counts);
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+    out.push_back({pixels[i].x, pixels[i].y, toRgb(colors[i])});
 }
 
 double averageMax(const std::vector<Rgb>& radiance) {
@@ -104,18 +90,28 @@ Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool ji
   return toRgb(sum / 16.0);
 }
 
-int antialiasTile(Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
-                  double thresh, bool jitter, Film& film, RayCounts& counts) {
-  int supersampled = 0;
-  for (int y = tile.y0; y < tile.y1; ++y) {
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      if (!needsSupersampling(film, x, y, avgmax, thresh)) continue;
-      film.radiance[film.index(x, y)] = supersamplePixel(tracer, camera, x, y, jitter, counts);
-      film.supersampled[film.index(x, y)] = 1;
-      ++supersampled;
-    }
+void antialiasBlock(Tracer& tracer, const Camera& camera, const Tile& block, const Film& film,
+                    double avgmax, double thresh, bool jitter, std::vector<Sample>& out,
+                    RayCounts& counts) {
+  for (int y = block.y0; y < block.y1; ++y)
+    for (int x = block.x0; x < block.x1; ++x)
+      if (needsSupersampling(film, x, y, avgmax, thresh))
+        out.push_back({x, y, supersamplePixel(tracer, camera, x, y, jitter, counts)});
+}
+
+void storeCentres(std::span<const Sample> samples, Film& film) {
+  for (const Sample& sample : samples) {
+    const std::size_t i = film.index(sample.x, sample.y);
+    film.centre[i] = film.radiance[i] = sample.radiance;
   }
-  return supersampled;
+}
+
+void storeSupersampled(std::span<const Sample> samples, Film& film) {
+  for (const Sample& sample : samples) {
+    const std::size_t i = film.index(sample.x, sample.y);
+    film.radiance[i] = sample.radiance;
+    film.supersampled[i] = 1;
+  }
 }
 
 } // namespace prism

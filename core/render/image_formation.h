@@ -1,7 +1,7 @@
-// The passes of image formation (docs/image-formation.md), each its own function so each can be tested and reused
-// by the progressive previewer: pixel centres, avgmax, the supersampling
-// decision, and the 4x4 supersampling itself. They work on tiles, the unit of
-// parallel work.
+// The steps of image formation (docs/image-formation.md), each its own function so each
+// can be tested: pixel centres, avgmax, the supersampling decision, and the
+// 4x4 supersampling itself, on blocks of a tile (the unit of parallel work).
+// The order they run in is the pass schedule's (core/render/pass_schedule.h).
 #pragma once
 
 #include "core/render/film.h"
@@ -32,15 +32,19 @@ struct Pixel {
   int x = 0, y = 0;
 };
 
-// Pass 1 over a tile: one eye ray through each pixel centre (ix + 0.5, iy + 0.5),
-// block by block of kBundleSide x kBundleSide pixels.
-void tracePixelCentres(Tracer& tracer, const Camera& camera, const Tile& tile, Film& film,
-                       RayCounts& counts);
+// One sample of the final picture: a pixel's centre (pass 1) or the mean of
+// its 16 sub-samples (pass 2). The passes hand out samples rather than write
+// the film, so that whoever runs them decides when a sample is published.
+struct Sample {
+  int x = 0, y = 0;
+  Rgb radiance{0.0f};
+};
 
-// The eye rays through the centres of `pixels` (at most Accel::kMaxBundle) as
-// one bundle, their colours into `out`, counted as pass-1 eye rays.
+// Pass 1 for `pixels` (at most Accel::kMaxBundle, traced as one bundle): one
+// eye ray through each pixel centre (x + 0.5, y + 0.5), counted as a pass-1
+// eye ray, its sample appended to `out`.
 void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pixel> pixels,
-                       std::span<Color> out, RayCounts& counts);
+                       std::vector<Sample>& out, RayCounts& counts);
 
 // Mean over all pixels of max(r, g, b), summed in pixel order so the result is
 // the same for any thread count.
@@ -55,9 +59,16 @@ bool needsSupersampling(const Film& film, int x, int y, double avgmax, double th
 Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
                      RayCounts& counts);
 
-// Pass 2 over a tile: every pixel that needsSupersampling gets supersamplePixel;
-// the others keep their centre sample. Returns the number supersampled.
-int antialiasTile(Tracer& tracer, const Camera& camera, const Tile& tile, double avgmax,
-                  double thresh, bool jitter, Film& film, RayCounts& counts);
+// Pass 2 over `block` of `film`, whose centres are a complete pass 1: the
+// supersamplePixel of every pixel that needsSupersampling, appended to `out`.
+void antialiasBlock(Tracer& tracer, const Camera& camera, const Tile& block, const Film& film,
+                    double avgmax, double thresh, bool jitter, std::vector<Sample>& out,
+                    RayCounts& counts);
+
+// Samples into the film. A pass-1 sample is the pixel's centre and its value
+// in the picture; a pass-2 sample replaces the value and marks the pixel
+// supersampled, and leaves the centre, which neighbours' decisions read.
+void storeCentres(std::span<const Sample> samples, Film& film);
+void storeSupersampled(std::span<const Sample> samples, Film& film);
 
 } // namespace prism

@@ -56,4 +56,18 @@ void parallelFor(int itemCount, int threads, const std::function<void(int, int)>
   if (failure) std::rethrow_exception(failure);
 }
 
+void ThreadPoolExecutor::forEach(int itemCount, const ItemWork& work, const StopCheck& stop) {
+  if (priority_ == Priority::Normal) {
+    parallelFor(itemCount, threads_, work, stop);
+    return;
+  }
+  parallelFor(
+      itemCount, threads_,
+      [&](int item, int worker) {
+        lowerCurrentThreadPriority(); // once per thread: it remembers
+        work(item, worker);
+      },
+      stop);
+}
+
 } // namespace prism

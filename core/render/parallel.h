@@ -4,6 +4,8 @@
 // items write disjoint pixels and keep per-worker ray counts).
 #pragma once
 
+#include "core/render/executor.h"
+
 #include <functional>
 
 namespace prism {
@@ -21,5 +23,25 @@ void lowerCurrentThreadPriority();
 // (checked before each item).
 void parallelFor(int itemCount, int threads, const std::function<void(int item, int worker)>& work,
                  const std::function<bool()>& stop = {});
+
+// The pass schedule's executor on this machine: every item on a pool of
+// `threads` threads (parallelFor), all sharing one film, so the reduction
+// points have nothing to do. Background workers lower their priority
+// (lowerCurrentThreadPriority): the previewer's session renders behind a
+// window that must keep redrawing; `prism render` does not.
+class ThreadPoolExecutor final : public Executor {
+public:
+  enum class Priority { Normal, Background };
+
+  explicit ThreadPoolExecutor(int threads, Priority priority = Priority::Normal)
+      : threads_(threads), priority_(priority) {}
+
+  int workers() const override { return threads_; }
+  void forEach(int itemCount, const ItemWork& work, const StopCheck& stop) override;
+
+private:
+  int threads_;
+  Priority priority_;
+};
 
 } // namespace prism

@@ -1,8 +1,6 @@
 #include "core/render/render_session.h"
 
-#include "core/render/image_formation.h"
 #include "core/render/parallel.h"
-#include "core/render/tracer.h"
 
 #include <condition_variable>
 #include <optional>
@@ -13,34 +11,26 @@ namespace prism {
 
 namespace {
 
-constexpr int kCoarsestLevel = 8; // block side of the first preview level
 constexpr std::uint8_t kNoSample = 255;
 
 using Clock = std::chrono::steady_clock;
 
-// One pixel-centre sample waiting to be published.
-struct Sample {
-  std::size_t index;
-  Rgb radiance;
-};
-
 } // namespace
-
-bool isNewAtLevel(int x, int y, int level) {
-  if (x % level != 0 || y % level != 0) return false;
-  return level == kCoarsestLevel || x % (2 * level) != 0 || y % (2 * level) != 0;
-}
 
 struct RenderSession::Work {
   Work(int w, int h)
       : film(w, h), display(film.pixelCount(), Rgb(0.0f)),
-        displayLevel(film.pixelCount(), kNoSample) {}
+        displayLevel(film.pixelCount(), kNoSample), displaySupersampled(film.pixelCount(), 0) {}
 
-  Film film;                              // the samples of the final picture
-  std::vector<Rgb> display;               // each pixel shows its nearest sample so far
-  std::vector<std::uint8_t> displayLevel; // block size of the sample shown; kNoSample: stale
+  // The samples of the final picture, written by the schedule's workers
+  // without the lock: read only once the render is done, or when the next
+  // generation starts from its pass 1 (with the workers joined).
+  Film film;
+  std::vector<Rgb> display;                      // each pixel shows its nearest sample so far
+  std::vector<std::uint8_t> displayLevel;        // block size of the sample shown; kNoSample: stale
+  std::vector<std::uint8_t> displaySupersampled; // the film's mask as far as published
   SessionPhase phase = SessionPhase::Coarse;
-  int level = kCoarsestLevel;
+  int level = kPreviewCoarsestLevel;
   double sumMax = 0.0;       // of max(r,g,b) over traced pixel centres
   double levelsAvgmax = 0.0; // sumMax / pass1Pixels when the last level completed
   long long pass1Pixels = 0;
@@ -81,8 +71,7 @@ void RenderSession::startWorkers(bool keepPass1) {
       // (marked stale), rather than flashing black on every drag of a light.
       work->display = work_->display;
       if (keepPass1) {
-        work->film.centre = work_->film.centre;
-        work->film.radiance = work_->film.centre;
+        work->film.centre = work_->film.centre; // the schedule starts pass 2 over from it
         work->display = work_->film.centre;
         std::fill(work->displayLevel.begin(), work->displayLevel.end(), std::uint8_t(1));
         work->sumMax = work_->sumMax;
@@ -149,30 +138,6 @@ void RenderSession::apply(const SessionEdit& edit) {
   startWorkers(onlyPass2 && pass1Complete);
 }
 
-void RenderSession::setSettings(const RenderSettings& settings) {
-  SessionEdit edit;
-  edit.settings = settings;
-  apply(edit);
-}
-
-void RenderSession::setLight(std::size_t index, const Light& light) {
-  SessionEdit edit;
-  edit.lights.emplace_back(index, light);
-  apply(edit);
-}
-
-void RenderSession::setAmbient(const Color& ambient) {
-  SessionEdit edit;
-  edit.ambient = ambient;
-  apply(edit);
-}
-
-void RenderSession::setCamera(const CameraSpec& camera) {
-  SessionEdit edit;
-  edit.camera = camera;
-  apply(edit);
-}
-
 void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel) {
   stopWorkers();
   accel_ = std::move(accel); // refers to *scene, so both change together
@@ -190,131 +155,101 @@ std::string RenderSession::failure() const {
 
 Scene RenderSession::sceneCopy() const { return *scene_; }
 
+// Publishes what the schedule produces into a Work, under the session's lock,
+// bumping the version each time so the viewer copies it.
+class RenderSession::Publisher final : public ScheduleSink {
+public:
+  Publisher(RenderSession& session, Work& work) : session_(session), work_(work) {}
+
+  void levelStarted(int level) override {
+    publish([&] {
+      work_.level = level;
+      // Levels run one after another: every centre traced so far belongs
+      // to a completed level.
+      if (work_.pass1Pixels > 0) work_.levelsAvgmax = work_.sumMax / double(work_.pass1Pixels);
+    });
+  }
+
+  void tileDone(const TileSamples& tile) override {
+    publish([&] {
+      if (tile.pass == 1)
+        showCentres(tile);
+      else
+        showSupersampled(tile);
+      work_.counts += tile.counts;
+    });
+  }
+
+  void pass1Complete(double avgmax) override {
+    publish([&] {
+      work_.avgmax = avgmax;
+      work_.levelsAvgmax = avgmax;
+      work_.pass1End = Clock::now();
+      work_.phase = SessionPhase::Antialias;
+      work_.pass1Counts = work_.counts;
+    });
+  }
+
+  void done(const RayCounts&) override { // the same counts, summed tile by tile
+    publish([&] {
+      work_.phase = SessionPhase::Done;
+      work_.done = true;
+      work_.end = Clock::now();
+    });
+    work_.doneChanged.notify_all();
+  }
+
+private:
+  template <class Change> void publish(Change&& change) {
+    std::lock_guard lock(session_.mutex_);
+    change();
+    session_.version_.fetch_add(1, std::memory_order_release);
+  }
+
+  // A coarse sample covers its block on the display until a finer one comes.
+  void showCentres(const TileSamples& tile) {
+    const int width = work_.film.width, height = work_.film.height, level = tile.level;
+    for (const Sample& sample : tile.samples) {
+      const Rgb& c = sample.radiance;
+      work_.sumMax += double(std::max({c.r, c.g, c.b}));
+      for (int by = sample.y; by < std::min(sample.y + level, height); ++by) {
+        for (int bx = sample.x; bx < std::min(sample.x + level, width); ++bx) {
+          const std::size_t j = work_.film.index(bx, by);
+          if (work_.displayLevel[j] <= level) continue; // a finer sample is shown
+          work_.display[j] = c;
+          work_.displayLevel[j] = std::uint8_t(level);
+        }
+      }
+    }
+    work_.pass1Pixels += (long long)tile.samples.size();
+  }
+
+  void showSupersampled(const TileSamples& tile) {
+    for (const Sample& sample : tile.samples) {
+      const std::size_t i = work_.film.index(sample.x, sample.y);
+      work_.display[i] = sample.radiance;
+      work_.displaySupersampled[i] = 1;
+    }
+    work_.supersampled += (long long)tile.samples.size();
+    ++work_.pass2TilesDone;
+  }
+
+  RenderSession& session_;
+  Work& work_;
+};
+
 void RenderSession::run(Work& work, bool keepPass1) {
-  const RenderSettings s = settings_;
-  const Camera camera(scene_->camera, s.width, s.height);
-  const std::vector<Tile> tiles = makeTiles(s.width, s.height, s.tileSize);
-  const int threads = resolveThreadCount(s.threads);
-  auto cancelled = [this] { return cancel_.load(std::memory_order_relaxed); };
+  const PassSchedule schedule(*scene_, *accel_, settings_, kPreviewCoarsestLevel);
+  ThreadPoolExecutor executor(resolveThreadCount(settings_.threads),
+                              ThreadPoolExecutor::Priority::Background);
   {
     std::lock_guard lock(mutex_);
-    work.tileCount = (long long)tiles.size();
+    work.tileCount = schedule.tileCount();
   }
-
-  auto publish = [&](auto&& apply) {
-    std::lock_guard lock(mutex_);
-    apply();
-    version_.fetch_add(1, std::memory_order_release);
-  };
-  // Every tile on the worker threads, in blocks of blockSide x blockSide
-  // pixels: sample(tracer, block, counts, samples) adds the block's samples
-  // (none where the pass has nothing to do), with a Tracer of the tile's own
-  // (it belongs to one thread); then the tile's samples and counts are handed
-  // to store() at once under the lock, so a cancelled tile is dropped whole,
-  // never half-published. Cancellation is checked block by block.
-  auto sampleTiles = [&](int blockSide, auto&& sample, auto&& store) {
-    parallelFor(
-        int(tiles.size()), threads,
-        [&](int item, int) {
-          lowerCurrentThreadPriority();
-          Tracer tracer(*scene_, *accel_, s.maxDepth);
-          RayCounts counts;
-          std::vector<Sample> samples;
-          for (const Tile& block : splitTile(tiles[std::size_t(item)], blockSide)) {
-            if (cancelled()) return;
-            sample(tracer, block, counts, samples);
-          }
-          publish([&] { store(samples, counts); });
-        },
-        cancelled);
-  };
-
-  if (!keepPass1) {
-    for (int level = kCoarsestLevel; level >= 1; level /= 2) {
-      publish([&] {
-        work.level = level;
-        // Levels run one after another: every centre traced so far belongs
-        // to a completed level.
-        if (work.pass1Pixels > 0) work.levelsAvgmax = work.sumMax / double(work.pass1Pixels);
-      });
-      // Any kBundleSide * level consecutive pixels hold kBundleSide multiples of
-      // `level`: a block of that side has at most a full bundle of new pixels.
-      sampleTiles(
-          kBundleSide * level,
-          [&](Tracer& tracer, const Tile& block, RayCounts& counts, std::vector<Sample>& samples) {
-            Pixel pixels[Accel::kMaxBundle];
-            std::size_t n = 0;
-            for (int y = block.y0; y < block.y1; ++y)
-              for (int x = block.x0; x < block.x1; ++x)
-                if (isNewAtLevel(x, y, level)) pixels[n++] = {x, y};
-            Color colors[Accel::kMaxBundle];
-            tracePixelCentres(tracer, camera, std::span(pixels, n), colors, counts);
-            for (std::size_t i = 0; i < n; ++i)
-              samples.push_back({work.film.index(pixels[i].x, pixels[i].y), toRgb(colors[i])});
-          },
-          [&](const std::vector<Sample>& samples, const RayCounts& counts) {
-            for (const Sample& sample : samples) {
-              work.film.centre[sample.index] = sample.radiance;
-              work.film.radiance[sample.index] = sample.radiance;
-              work.sumMax +=
-                  double(std::max({sample.radiance.r, sample.radiance.g, sample.radiance.b}));
-              const int x = int(sample.index % std::size_t(s.width));
-              const int y = int(sample.index / std::size_t(s.width));
-              for (int by = y; by < std::min(y + level, s.height); ++by) {
-                for (int bx = x; bx < std::min(x + level, s.width); ++bx) {
-                  const std::size_t j = work.film.index(bx, by);
-                  if (work.displayLevel[j] <= level) continue; // a finer sample is shown
-                  work.display[j] = sample.radiance;
-                  work.displayLevel[j] = std::uint8_t(level);
-                }
-              }
-            }
-            work.pass1Pixels += (long long)samples.size();
-            work.counts += counts;
-          });
-      if (cancelled()) return;
-    }
-  }
-
-  // The same function over the same samples as render(): the same avgmax.
-  const double avgmax = averageMax(work.film.centre);
-  publish([&] {
-    work.avgmax = avgmax;
-    work.levelsAvgmax = avgmax;
-    work.pass1End = Clock::now();
-    work.phase = SessionPhase::Antialias;
-    work.pass1Counts = work.counts;
-  });
-
-  // Small blocks: a supersampled pixel costs 16 eye rays and their trees, and
-  // an edit should not wait for many of them.
-  sampleTiles(
-      4,
-      [&](Tracer& tracer, const Tile& block, RayCounts& counts, std::vector<Sample>& samples) {
-        for (int y = block.y0; y < block.y1; ++y)
-          for (int x = block.x0; x < block.x1; ++x)
-            if (needsSupersampling(work.film, x, y, avgmax, s.thresh))
-              samples.push_back({work.film.index(x, y),
-                                 supersamplePixel(tracer, camera, x, y, s.jitter, counts)});
-      },
-      [&](const std::vector<Sample>& samples, const RayCounts& counts) {
-        for (const Sample& sample : samples) {
-          work.film.radiance[sample.index] = sample.radiance;
-          work.film.supersampled[sample.index] = 1;
-          work.display[sample.index] = sample.radiance;
-        }
-        work.supersampled += (long long)samples.size();
-        work.counts += counts;
-        ++work.pass2TilesDone;
-      });
-  if (cancelled()) return;
-
-  publish([&] {
-    work.phase = SessionPhase::Done;
-    work.done = true;
-    work.end = Clock::now();
-  });
-  work.doneChanged.notify_all();
+  Publisher publisher(*this, work);
+  schedule.run(
+      work.film, executor, publisher, [this] { return cancel_.load(std::memory_order_relaxed); },
+      keepPass1 ? Pass1::Keep : Pass1::Trace);
 }
 
 bool RenderSession::copyImage(SessionImage& image) const {
@@ -326,7 +261,7 @@ bool RenderSession::copyImage(SessionImage& image) const {
   image.width = work_->film.width;
   image.height = work_->film.height;
   image.radiance = work_->display;
-  image.supersampled = work_->film.supersampled;
+  image.supersampled = work_->displaySupersampled;
   image.version = now;
   return true;
 }

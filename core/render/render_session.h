@@ -1,24 +1,21 @@
 // A progressive render that can be changed while it runs: what the previewer
 // shows and edits. It owns the scene, the settings, the film and the worker
-// threads, and runs the pass schedule
-//
-//   coarse levels (one pixel-centre sample per 8x8, then 4x4, 2x2, 1x1 block;
-//   each level traces only the centres the coarser ones did not)  = pass 1
-//   -> avgmax -> the adaptive antialiasing pass (pass 2)
-//
-// so every sample taken is a sample of the final picture: the coarse levels are
-// pass 1 in a different order, and the finished film is bit-for-bit what
+// threads, and runs the pass schedule (core/render/pass_schedule.h) with the
+// preview levels: one pixel-centre sample per 8x8 block, then 4x4, 2x2 and
+// 1x1, which together are pass 1; avgmax; pass 2. Every sample taken is a
+// sample of the final picture, so the finished film is bit-for-bit what
 // render() produces with the same scene and settings.
 //
-// Every edit cancels the work in flight (workers check between rows, so this
+// Every edit cancels the work in flight (workers check between blocks, so this
 // takes milliseconds), applies the change and restarts from the first level;
-// results of cancelled work are never published. Workers publish finished
-// tiles under a short lock and bump a version number; a viewer polls version()
-// once per frame and copies the buffers only when it changed. No GL here.
+// results of cancelled work are never published. Finished tiles are published
+// under a short lock with a version bump; a viewer polls version() once per
+// frame and copies the buffers only when it changed. No GL here.
 #pragma once
 
 #include "core/accel/accel.h"
 #include "core/render/film.h"
+#include "core/render/pass_schedule.h"
 #include "core/render/ray_counts.h"
 #include "core/render/renderer.h"
 #include "core/scene/scene.h"
@@ -73,19 +70,16 @@ struct SessionImage {
   std::uint64_t version = 0;
 };
 
-// True when pixel (x, y) gets its centre sample at coarse `level` (8, 4, 2 or
-// 1): it lies on that level's grid and on no coarser one. Every pixel is new at
-// exactly one level, so the levels together are pass 1, each centre traced once.
-bool isNewAtLevel(int x, int y, int level);
-
-// Several values changed at once, with one restart: a dragged light, an undo
-// that puts back a camera and two lights, a reload re-applying the user's
-// edits. Unset members stay as they are.
+// The one way to change the session: one value (a dragged light) or several
+// at once with one restart (an undo that puts back a camera and two lights, a
+// reload re-applying the user's edits). Unset members stay as they are; the
+// initialisers let a designated initialiser name only what changes:
+// apply({.ambient = Color(0.1)}). Later values (fog, textures) become members.
 struct SessionEdit {
-  std::optional<RenderSettings> settings;
-  std::optional<CameraSpec> camera;
-  std::optional<Color> ambient;
-  std::vector<std::pair<std::size_t, Light>> lights; // 0-based index, new value
+  std::optional<RenderSettings> settings{};
+  std::optional<CameraSpec> camera{};
+  std::optional<Color> ambient{};
+  std::vector<std::pair<std::size_t, Light>> lights{}; // 0-based index, new value
 
   bool empty() const { return !settings && !camera && !ambient && lights.empty(); }
 };
@@ -105,11 +99,6 @@ public:
   // (users see them from 1); one past the scene's lights throws
   // std::out_of_range before anything is stopped or changed.
   void apply(const SessionEdit& edit);
-  // One value each: apply() with that member set.
-  void setSettings(const RenderSettings& settings);
-  void setLight(std::size_t index, const Light& light);
-  void setAmbient(const Color& ambient);
-  void setCamera(const CameraSpec& camera);
   // A reloaded scene: new geometry with its hierarchy, built by
   // makeAccel(*scene, accelKind()) beforehand (on another thread: for 10^6
   // primitives that takes a second).
@@ -142,7 +131,8 @@ public:
   RenderResult waitForResult();
 
 private:
-  struct Work; // one render generation: its film, counters and schedule
+  struct Work;     // one render generation: its film, counters and display
+  class Publisher; // the schedule's sink: publishes into a Work
 
   void stopWorkers();
   void startWorkers(bool keepPass1);

@@ -1,6 +1,8 @@
-// A complete render (docs/image-formation.md) on all cores: pass 1 over tiles, avgmax, pass 2
-// over tiles. The picture is the same for any thread count: every pixel's value
-// depends only on the scene and settings, and counts are summed per worker.
+// A complete render (docs/image-formation.md) on all cores: the pass schedule
+// (core/render/pass_schedule.h: pass 1 over tiles, avgmax, pass 2 over tiles)
+// run to completion on the thread pool. The picture is the same for any thread
+// count: every pixel's value depends only on the scene and settings, and
+// counts are summed per worker.
 #pragma once
 
 #include "core/accel/accel.h"

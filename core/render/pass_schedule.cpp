@@ -1,0 +1,135 @@
+#include "core/render/pass_schedule.h"
+
+#include "core/render/tracer.h"
+
+#include <algorithm>
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace prism {
+
+PassSchedule::PassSchedule(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                           int coarsestLevel)
+    : scene_(scene), accel_(accel), settings_(settings), coarsestLevel_(coarsestLevel),
+      camera_(scene.camera, settings.width, settings.height),
+      tiles_(makeTiles(settings.width, settings.height, settings.tileSize)) {
+  if (coarsestLevel < 1 || (coarsestLevel & (coarsestLevel - 1)) != 0)
+    throw std::invalid_argument("the first level of a pass schedule must be a power of two, not " +
+                                std::to_string(coarsestLevel));
+}
+
+class PassSchedule::Run {
+public:
+  Run(const PassSchedule& schedule, Film& film, Executor& executor, ScheduleSink& sink,
+      const StopCheck& stop)
+      : s_(schedule), film_(film), executor_(executor), sink_(sink), stop_(stop),
+        counts_(std::size_t(executor.workers())) {}
+
+  bool stopped() const { return stop_ && stop_(); }
+
+  // Pass 1's coarse `level`: the centres new at this level. Any
+  // kBundleSide * level consecutive pixels hold kBundleSide multiples of
+  // `level`, so a block of that side has at most a full bundle of new
+  // pixels; at level 1 of a one-level schedule they are render()'s 8x8
+  // bundles.
+  void traceLevel(int level) {
+    sink_.levelStarted(level);
+    forEachTile(
+        1, level, kBundleSide * level, [&](Tracer& tracer, const Tile& block, TileSamples& out) {
+          Pixel pixels[Accel::kMaxBundle];
+          std::size_t n = 0;
+          for (int y = block.y0; y < block.y1; ++y)
+            for (int x = block.x0; x < block.x1; ++x)
+              if (isNewAtLevel(x, y, level, s_.coarsestLevel_)) pixels[n++] = {x, y};
+          tracePixelCentres(tracer, s_.camera_, std::span(pixels, n), out.samples, out.counts);
+        });
+  }
+
+  // Pass 2 in small blocks: a supersampled pixel costs 16 eye rays and their
+  // trees, and a cancelling edit should not wait for many of them.
+  void antialias(double avgmax) {
+    const RenderSettings& settings = s_.settings_;
+    forEachTile(2, 1, 4, [&](Tracer& tracer, const Tile& block, TileSamples& out) {
+      antialiasBlock(tracer, s_.camera_, block, film_, avgmax, settings.thresh, settings.jitter,
+                     out.samples, out.counts);
+    });
+  }
+
+  // Every ray traced so far, over all workers.
+  RayCounts counts() const {
+    RayCounts total;
+    for (const RayCounts& c : counts_)
+      total += c;
+    return total;
+  }
+
+private:
+  using BlockSampler = std::function<void(Tracer&, const Tile& block, TileSamples& out)>;
+
+  // Every tile on the executor, block by block (cancellation is checked
+  // between blocks), with a Tracer of the tile's own: it belongs to one
+  // thread (core/render/tracer.h). A tile's rays are counted in counts of its
+  // own, added to its worker's once: the workers' counts sit side by side in
+  // memory, and adding to them ray by ray from two cores would bounce their
+  // cache line between the cores.
+  void forEachTile(int pass, int level, int blockSide, const BlockSampler& sampleBlock) {
+    executor_.forEach(
+        s_.tileCount(),
+        [&](int item, int worker) {
+          const Tile& tile = s_.tiles_[std::size_t(item)];
+          Tracer tracer(s_.scene_, s_.accel_, s_.settings_.maxDepth);
+          TileSamples out{pass, level, item, {}, {}};
+          if (pass == 1)
+            out.samples.reserve(std::size_t((tile.x1 - tile.x0 + level - 1) / level) *
+                                std::size_t((tile.y1 - tile.y0 + level - 1) / level));
+          for (const Tile& block : splitTile(tile, blockSide)) {
+            if (stopped()) return;
+            sampleBlock(tracer, block, out);
+          }
+          // All at once: the film never holds a part of a tile, and a
+          // tile stopped halfway is dropped whole.
+          (pass == 1 ? storeCentres : storeSupersampled)(out.samples, film_);
+          counts_[std::size_t(worker)] += out.counts;
+          sink_.tileDone(out);
+        },
+        stop_);
+  }
+
+  const PassSchedule& s_;
+  Film& film_;
+  Executor& executor_;
+  ScheduleSink& sink_;
+  const StopCheck& stop_;
+  std::vector<RayCounts> counts_; // per worker
+};
+
+bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const StopCheck& stop,
+                       Pass1 pass1) const {
+  Run run(*this, film, executor, sink, stop);
+  if (pass1 == Pass1::Trace) {
+    for (int level = coarsestLevel_; level >= 1; level /= 2) {
+      run.traceLevel(level);
+      if (run.stopped()) return false;
+    }
+  } else {
+    film.radiance = film.centre;
+    std::fill(film.supersampled.begin(), film.supersampled.end(), std::uint8_t(0));
+  }
+
+  executor.completePass1(film);
+  // Summed in pixel order over the whole film: the same for any executor.
+  const double avgmax = averageMax(film.centre);
+  sink.pass1Complete(avgmax);
+
+  run.antialias(avgmax);
+  if (run.stopped()) return false;
+
+  RayCounts counts = run.counts();
+  executor.completeRender(film, counts);
+  sink.done(counts);
+  return true;
+}
+
+} // namespace prism

@@ -42,6 +42,26 @@ Material plastic(const Color& color, double kdr, double ksr, double e) {
   return m;
 }
 
+// What a generated scene is seen and lit by: the camera (up +y), the
+// background, the ambient light and two lights, a key and a fill.
+struct Stage {
+  Vec3 eye, lookat;
+  double fov;
+  Color background;
+  double ambient;
+  Light key, fill;
+};
+
+void setStage(Scene& scene, SceneBuilder& build, const Stage& stage) {
+  scene.camera.eye = stage.eye;
+  scene.camera.lookat = stage.lookat;
+  scene.camera.fov = stage.fov;
+  scene.background = stage.background;
+  scene.ambient = Color(stage.ambient);
+  build.addLight(stage.key);
+  build.addLight(stage.fill);
+}
+
 void addPolygonIfValid(SceneBuilder& build, const std::vector<Vec3>& vertices,
                        std::uint32_t material) {
   if (!polygonProblem(vertices)) build.polygon(vertices, material, Origin{});
@@ -53,13 +73,9 @@ Scene makeSphereflake(std::size_t spheres) {
   Scene scene;
   SceneBuilder build(scene);
   build.addFile("(generated sphereflake)");
-  scene.camera.eye = Vec3(2.1, 1.7, 2.6);
-  scene.camera.lookat = Vec3(0.0, 0.15, 0.0);
-  scene.camera.fov = 45.0;
-  scene.background = Color(0.08, 0.1, 0.16);
-  scene.ambient = Color(0.1);
-  build.addLight({Vec3(4, 6, 3), Color(40.0)});
-  build.addLight({Vec3(-5, 3, 4), Color(12.0)});
+  setStage(scene, build,
+           {Vec3(2.1, 1.7, 2.6), Vec3(0.0, 0.15, 0.0), 45.0, Color(0.08, 0.1, 0.16), 0.1,
+            Light{Vec3(4, 6, 3), Color(40.0)}, Light{Vec3(-5, 3, 4), Color(12.0)}});
   const std::uint32_t ground = build.material(plastic(Color(0.6, 0.6, 0.55), 0.8, 0.0, 1.0));
   const std::uint32_t flake = build.material(plastic(Color(0.85, 0.7, 0.45), 0.5, 0.4, 40.0));
   addPolygonIfValid(build, {{-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4}}, ground);
@@ -138,13 +154,9 @@ Scene polygonSoup(std::size_t triangles, double radius, bool spatialOrder, std::
   Scene scene;
   SceneBuilder build(scene);
   build.addFile("(generated polygon soup)");
-  scene.camera.eye = Vec3(0.0, 0.0, 4.2);
-  scene.camera.lookat = Vec3(0.0);
-  scene.camera.fov = 40.0;
-  scene.background = Color(0.1, 0.12, 0.2);
-  scene.ambient = Color(0.15);
-  build.addLight({Vec3(3, 4, 5), Color(40.0)});
-  build.addLight({Vec3(-4, 2, 3), Color(12.0)});
+  setStage(scene, build,
+           {Vec3(0.0, 0.0, 4.2), Vec3(0.0), 40.0, Color(0.1, 0.12, 0.2), 0.15,
+            Light{Vec3(3, 4, 5), Color(40.0)}, Light{Vec3(-4, 2, 3), Color(12.0)}});
   const std::uint32_t material = build.material(plastic(Color(0.7, 0.75, 0.8), 0.8, 0.2, 20.0));
 
   std::vector<SoupTriangle> soup(triangles);

@@ -125,6 +125,10 @@ private:
   void triangle(Command& c);
   void ptriangle(Command& c);
   void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals);
+  // Adds a shape placed by its own affine map (an ellipsoid, a cone) after
+  // the checks they share: within the model range, and, when the map is
+  // what `prism convert` writes back, not stretched too unevenly for that.
+  template <class Shape> void addPlaced(Command& c, Shape shape, const char* name, bool mapWritten);
   void push(Command& c);
   void pop(Command& c);
   void translate(Command& c);
@@ -367,17 +371,22 @@ void Parser::sphere(Command& c) {
     error(c.keyword, "sphere: too small after the current transform");
     return;
   }
-  if (!withinModelRange(e.bounds)) {
-    error(c.keyword, outsideModelRangeMessage("sphere"));
+  addPlaced(c, e, "sphere", true);
+}
+
+template <class Shape>
+void Parser::addPlaced(Command& c, Shape shape, const char* name, bool mapWritten) {
+  if (!withinModelRange(shape.bounds)) {
+    error(c.keyword, outsideModelRangeMessage(name));
     return;
   }
-  if (!(stretchRatioBound(e.objectToWorld) <= kMaxStretchRatio)) {
-    error(c.keyword, tooUnevenMessage("sphere"));
+  if (mapWritten && !(stretchRatioBound(shape.objectToWorld) <= kMaxStretchRatio)) {
+    error(c.keyword, tooUnevenMessage(name));
     return;
   }
-  e.material = build_.currentMaterial();
-  e.origin = origin(c);
-  build_.add(e);
+  shape.material = build_.currentMaterial();
+  shape.origin = origin(c);
+  build_.add(shape);
 }
 
 void Parser::polygon(Command& c) {
@@ -426,19 +435,10 @@ void Parser::cone(Command& c) {
     error(c.keyword, "cone: too large or too small after the current transform");
     return;
   }
-  if (!withinModelRange(cone.bounds)) {
-    error(c.keyword, outsideModelRangeMessage("cone"));
-    return;
-  }
   // An elliptic cone is written back through its frame's map (see
-  // scene_writer.cpp), which must stay well conditioned; a circular one is not.
-  if (!isCircular(cone) && !(stretchRatioBound(cone.objectToWorld) <= kMaxStretchRatio)) {
-    error(c.keyword, tooUnevenMessage("cone"));
-    return;
-  }
-  cone.material = build_.currentMaterial();
-  cone.origin = origin(c);
-  build_.add(cone);
+  // core/io/shape_text/), which must stay well conditioned; a circular one
+  // is written as its end circles.
+  addPlaced(c, cone, "cone", !isCircular(cone));
 }
 
 void Parser::triangle(Command& c) {

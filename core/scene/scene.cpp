@@ -17,15 +17,6 @@ Origin Scene::origin(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.origin; });
 }
 
-SurfacePoint Scene::surfaceAt(PrimitiveRef ref, const Vec3& point, SurfaceDetail detail) const {
-  return visit(ref, [&](const auto& shape) {
-    SurfacePoint surface = prism::surfaceAt(shape, arrays(), point);
-    surface.material = shape.material;
-    if (detail == SurfaceDetail::WithCoordinates) surface.uv = uvAt(shape, arrays(), point);
-    return surface;
-  });
-}
-
 std::string Scene::describe(PrimitiveRef ref) const {
   std::ostringstream text;
   text << kindName(ref.kind) << " #" << ref.index;

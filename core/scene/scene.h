@@ -67,6 +67,8 @@ struct Scene {
   Origin origin(PrimitiveRef ref) const;
   // The surface record at `point` on the primitive: normals, ray starts,
   // part and material, and with SurfaceDetail::WithCoordinates also (u, v).
+  // (Inline: the tracer calls it for every hit, and what it does not use of
+  // the record is then never stored.)
   SurfacePoint surfaceAt(PrimitiveRef ref, const Vec3& point,
                          SurfaceDetail detail = SurfaceDetail::Shading) const;
   // The material at a surface point: the one place shading looks it up. The
@@ -92,5 +94,15 @@ private:
     }
   }
 };
+
+inline SurfacePoint Scene::surfaceAt(PrimitiveRef ref, const Vec3& point,
+                                     SurfaceDetail detail) const {
+  return visit(ref, [&](const auto& shape) {
+    SurfacePoint surface = prism::surfaceAt(shape, arrays(), point);
+    surface.material = shape.material;
+    if (detail == SurfaceDetail::WithCoordinates) surface.uv = uvAt(shape, arrays(), point);
+    return surface;
+  });
+}
 
 } // namespace prism

@@ -28,7 +28,21 @@ inline bool quadricRoots(const Vec3& f, const Vec3& d, double r2, double& t0, do
   return true;
 }
 
-// The nearest root inside `range`.
-bool nearestQuadricRoot(const Vec3& f, const Vec3& d, double r2, Interval range, double& t);
+// The nearest root inside `range`. Inline, like quadricRoots: it is the
+// whole of the sphere's and the ellipsoid's intersection tests, which the
+// hierarchies call for every candidate.
+inline bool nearestQuadricRoot(const Vec3& f, const Vec3& d, double r2, Interval range, double& t) {
+  double t0, t1;
+  if (!quadricRoots(f, d, r2, t0, t1)) return false;
+  if (range.contains(t0)) {
+    t = t0;
+    return true;
+  }
+  if (range.contains(t1)) {
+    t = t1;
+    return true;
+  }
+  return false;
+}
 
 } // namespace prism

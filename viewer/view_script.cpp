@@ -144,9 +144,39 @@ const std::map<std::string, WaitFor>& waitTargets() {
   return table;
 }
 
+// The actions that take one number in a range: what the number is called in
+// the usage message, the range, and whether it is a whole number (kept in
+// ScriptAction::index) or not (ScriptAction::values).
+struct OneNumber {
+  const char* usage;
+  double min, max;
+  bool whole;
+};
+
+const std::map<ScriptOp, OneNumber>& oneNumberActions() {
+  static const std::map<ScriptOp, OneNumber> table{
+      {ScriptOp::Frames, {"N", 0, 1000000, true}},
+      {ScriptOp::Timeout, {"SECONDS", 0.001, 1e6, false}},
+      {ScriptOp::Depth, {"D", 1, 1000, true}},
+      {ScriptOp::Thresh, {"T", 0.0, 1.0, false}},
+      {ScriptOp::Zoom, {"FACTOR", 1e-6, 1e6, false}},
+      {ScriptOp::Ev, {"STOPS", -5.0, 5.0, false}},
+  };
+  return table;
+}
+
 void parseArguments(const std::string& line, const std::vector<Token>& t, LineParser& p,
                     ScriptAction& a) {
   constexpr double kHuge = 1e30;
+  if (const auto it = oneNumberActions().find(a.op); it != oneNumberActions().end()) {
+    const OneNumber& n = it->second;
+    if (!p.arity(t, 1, n.usage)) return;
+    if (n.whole)
+      a.index = p.integer(t[1], t[0].text, int(n.min), int(n.max));
+    else
+      a.values.push_back(p.number(t[1], t[0].text, n.min, n.max));
+    return;
+  }
   auto numbers = [&](std::size_t first, const char* what, double min) {
     for (std::size_t i = first; i < t.size(); ++i)
       a.values.push_back(p.number(t[i], what, min, kHuge));
@@ -159,18 +189,6 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     } else {
       p.error(t[1], "wait: expected coarse, pass1, done, reload or error, got '" + t[1].text + "'");
     }
-    return;
-  case ScriptOp::Frames:
-    if (p.arity(t, 1, "N")) a.index = p.integer(t[1], "frames", 0, 1000000);
-    return;
-  case ScriptOp::Timeout:
-    if (p.arity(t, 1, "SECONDS")) a.values.push_back(p.number(t[1], "timeout", 0.001, 1e6));
-    return;
-  case ScriptOp::Depth:
-    if (p.arity(t, 1, "D")) a.index = p.integer(t[1], "depth", 1, 1000);
-    return;
-  case ScriptOp::Thresh:
-    if (p.arity(t, 1, "T")) a.values.push_back(p.number(t[1], "thresh", 0.0, 1.0));
     return;
   case ScriptOp::Jitter:
   case ScriptOp::Overlay:
@@ -196,9 +214,6 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
   case ScriptOp::Pan:
     if (p.arity(t, 2, "DX DY (pixels)")) numbers(1, "pan", -kHuge);
     return;
-  case ScriptOp::Zoom:
-    if (p.arity(t, 1, "FACTOR")) a.values.push_back(p.number(t[1], "zoom", 1e-6, 1e6));
-    return;
   case ScriptOp::Save:
   case ScriptOp::Screenshot:
     if (t.size() < 2) p.error(t[0], t[0].text + ": expected PATH");
@@ -210,9 +225,6 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     if (t[1].text != "auto" && t[1].text != "lock")
       p.error(t[1], "exposure: expected auto or lock, got '" + t[1].text + "'");
     a.values.push_back(t[1].text == "lock" ? 1.0 : 0.0);
-    return;
-  case ScriptOp::Ev:
-    if (p.arity(t, 1, "STOPS")) a.values.push_back(p.number(t[1], "ev", -5.0, 5.0));
     return;
   case ScriptOp::Picture:
     if (!p.arity(t, 1, "fit or PERCENT")) return;
@@ -242,6 +254,12 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
   case ScriptOp::Reload:
   case ScriptOp::Pin:
   case ScriptOp::Quit: p.arity(t, 0, "no arguments"); return;
+  case ScriptOp::Frames:
+  case ScriptOp::Timeout:
+  case ScriptOp::Depth:
+  case ScriptOp::Thresh:
+  case ScriptOp::Zoom:
+  case ScriptOp::Ev: return; // oneNumberActions, above
   }
 }
 

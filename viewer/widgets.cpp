@@ -50,20 +50,13 @@ std::vector<std::string> WidgetLog::duplicateIds() const {
   return duplicates;
 }
 
+// A widget as --dump-widgets lists it: every member by its own name but the
+// ImGui id, which means nothing outside the process.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(WidgetRecord, label, name, kind, value, active, visible, x, y,
+                                   w, h)
+
 std::string WidgetLog::json() const {
-  nlohmann::json list = nlohmann::json::array();
-  for (const WidgetRecord& w : widgets_) {
-    list.push_back({{"label", w.label},
-                    {"name", w.name},
-                    {"kind", w.kind},
-                    {"value", w.value},
-                    {"active", w.active},
-                    {"visible", w.visible},
-                    {"x", w.x},
-                    {"y", w.y},
-                    {"w", w.w},
-                    {"h", w.h}});
-  }
+  const nlohmann::json list = widgets_;
   return list.dump(1) + "\n";
 }
 

@@ -107,18 +107,20 @@ private:
 
   bool startsCommand(std::string_view word) const override { return handlerFor(word) != nullptr; }
 
-  // Commands.
+  // Commands: the camera and the picture.
   void eye(Command& c) { cameraPoint(c, scene_.camera.eye, true); }
   void lookat(Command& c) { cameraPoint(c, scene_.camera.lookat, true); }
   void up(Command& c) { cameraPoint(c, scene_.camera.up, false); }
   void cameraPoint(Command& c, Vec3& target, bool isPoint);
   void fov(Command& c);
   void resolution(Command& c);
+  // Light and materials.
   void background(Command& c) { globalColor(c, scene_.background); }
   void ambient(Command& c) { globalColor(c, scene_.ambient); }
   void globalColor(Command& c, Color& target);
   void light(Command& c);
   void surface(Command& c);
+  // Shapes.
   void sphere(Command& c);
   void polygon(Command& c);
   void cone(Command& c);
@@ -129,6 +131,7 @@ private:
   // the checks they share: within the model range, and, when the map is
   // what `prism convert` writes back, not stretched too unevenly for that.
   template <class Shape> void addPlaced(Command& c, Shape shape, const char* name, bool mapWritten);
+  // Transforms, groups and other files.
   void push(Command& c);
   void pop(Command& c);
   void translate(Command& c);

@@ -227,24 +227,32 @@ public:
   bool tap(const std::string& keys) const {
     return xdotool(display_, "keydown " + keys + " sleep 0.01 keyup " + keys);
   }
-  // Presses at (x, y), moves by (dx, dy) in steps, releases: a drag.
   // Presses `button` at (x, y), moves by (dx, dy), and releases it only once
   // `moved()` holds (or after 20 s): a loaded machine may render a frame
   // slower than the events arrive, and a release seen in the same frame as
-  // the last move would lose the drag. Returns whether `moved()` held.
-  bool drag(int x, int y, int dx, int dy, const std::function<bool()>& moved,
-            int button = 1) const {
+  // the last move would lose the drag. When `grabbed` is given the motion
+  // starts only once it holds (the window has seen the press): otherwise the
+  // press and the whole motion can fall into one frame, which then sees the
+  // button go down where the motion ended. Returns whether `moved()` held.
+  bool drag(int x, int y, int dx, int dy, const std::function<bool()>& moved, int button = 1,
+            const std::function<bool()>& grabbed = {}) const {
     std::string steps;
     for (int i = 1; i <= 5; ++i)
       steps += " mousemove " + std::to_string(x + dx * i / 5) + " " +
                std::to_string(y + dy * i / 5) + " sleep 0.03";
     const std::string b = std::to_string(button);
-    const bool pressed =
-        xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
-                              " mousedown " + b + " sleep 0.05" + steps);
+    const bool pressed = xdotool(display_, "mousemove " + std::to_string(x) + " " +
+                                               std::to_string(y) + " mousedown " + b) &&
+                         (!grabbed || waitFor(grabbed)) && xdotool(display_, "sleep 0.05" + steps);
     const bool done = pressed && waitFor(moved);
     // A dragged widget is released in a later frame: its value is final then.
     return xdotool(display_, "mouseup " + b) && done && waitFor([&] { return !anyActive(); });
+  }
+  // Drags widget `name`, held at `fx` of its width, `dx` pixels sideways.
+  bool dragWidget(const std::string& name, double fx, int dx,
+                  const std::function<bool()>& moved) const {
+    const auto [x, y] = at(name, fx);
+    return drag(x, y, dx, 0, moved, 1, [&] { return active(name); });
   }
   // Waits for the program to end by itself.
   bool exits(double seconds) {
@@ -316,8 +324,8 @@ TEST_F(ViewInput, ButtonsAndCheckboxesWorkByMouse) {
   EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 3/light 3").has_value(); }));
   // Reset camera: an edited eye goes back to the file's.
   const std::string eye = app_.value("Camera/eye");
-  const auto [x, y] = app_.at("Camera/eye", 0.16);
-  ASSERT_TRUE(app_.drag(x, y, 60, 0, [&] { return app_.value("Camera/eye") != eye; }));
+  ASSERT_TRUE(
+      app_.dragWidget("Camera/eye", 0.16, 60, [&] { return app_.value("Camera/eye") != eye; }));
   ASSERT_TRUE(app_.click("Camera/Reset camera (Home)"));
   EXPECT_TRUE(app_.waitForValue("Camera/eye", eye));
 }
@@ -519,8 +527,8 @@ TEST_F(ViewInput, EveryOtherControlByMouse) {
   changesOnClick("Camera/fov", 0.8);
   const auto changesOnDrag = [&](const std::string& name) {
     const std::string before = app_.value(name);
-    const auto [x, y] = app_.at(name, 0.16);
-    EXPECT_TRUE(app_.drag(x, y, 70, 0, [&] { return app_.value(name) != before; })) << name;
+    EXPECT_TRUE(app_.dragWidget(name, 0.16, 70, [&] { return app_.value(name) != before; }))
+        << name;
   };
   changesOnDrag("Lights/ambient");
   changesOnDrag("Lights/light 2/intensity");

@@ -81,6 +81,31 @@ void Tracer::traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCou
         (found >> i & 1u) != 0 ? shade(rays[i], hits[i], 1, counts, nullptr) : scene_.background;
 }
 
+void Tracer::setBailout(const BailoutBound& bound) {
+  bailout_ = bound.active() ? &bound : nullptr;
+  allowance_ = bound.allowance;
+}
+
+// The proof (docs/rendering-model.md#bailout): a ray of weight w and
+// allowance a gives each new ray c (coefficient k_c) the allowance
+// a / (ksr + kst), so w k_c a / (ksr + kst) summed over its new rays is at
+// most w a. A skipped ray brings back at most beyond[depth + 1], so skipping
+// it when beyond[depth + 1] <= a / (ksr + kst) keeps its loss within its
+// share; a traced one keeps its descendants' within it by induction.
+bool Tracer::bailsOut(const Material& m, int depth) const {
+  return bailout_->beyond[std::size_t(depth) + 1] * (m.ksr + m.kst) <= allowance_;
+}
+
+Color Tracer::traceNew(const Ray& ray, const Material& m, int depth, RayCounts& counts,
+                       RayTreeNode* record, const PrimitiveRef* skip) {
+  if (bailout_ == nullptr) return trace(ray, depth + 1, counts, record, skip);
+  const double parent = allowance_;
+  allowance_ = parent / (m.ksr + m.kst);
+  const Color radiance = trace(ray, depth + 1, counts, record, skip);
+  allowance_ = parent;
+  return radiance;
+}
+
 bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                      int depth) {
   const Interval range{0.0, length};
@@ -213,6 +238,10 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
                                                        const Material& m, int depth,
                                                        RayCounts& counts, RayTreeNode* record) {
   if (!(depth < maxDepth_ && m.ksr > 0.0)) return Color(0.0);
+  if (bailout_ != nullptr && bailsOut(m, depth)) {
+    ++counts.reflectedSkipped;
+    return Color(0.0);
+  }
   ++counts.reflected;
   RayTreeNode* child = nullptr;
   if (record != nullptr) {
@@ -220,7 +249,7 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
     child->kind = RayKind::Reflected;
   }
   const Ray r{at.frame.above, reflect(ray.dir, at.nr)};
-  return m.ksr * trace(r, depth + 1, counts, child, at.skip);
+  return m.ksr * traceNew(r, m, depth, counts, child, at.skip);
 }
 
 [[gnu::always_inline]] inline Color Tracer::transmission(const Ray& ray, const Incidence& at,
@@ -235,13 +264,18 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
     if (record != nullptr) record->totalInternalReflection = true;
     return Color(0.0);
   }
+  // After the test for total internal reflection, which is counted as usual.
+  if (bailout_ != nullptr && bailsOut(m, depth)) {
+    ++counts.transmittedSkipped;
+    return Color(0.0);
+  }
   ++counts.transmitted;
   RayTreeNode* child = nullptr;
   if (record != nullptr) {
     child = &record->children.emplace_back();
     child->kind = RayKind::Transmitted;
   }
-  return m.kst * trace({at.frame.below, dir}, depth + 1, counts, child, at.skip);
+  return m.kst * traceNew({at.frame.below, dir}, m, depth, counts, child, at.skip);
 }
 
 } // namespace prism

@@ -156,6 +156,7 @@ bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const
     if (run.bailingOut()) {
       run.allowFor(run.pilotAvgmax());
       if (run.stopped()) return false;
+      sink.pilotDone(run.counts());
     }
     for (int level = coarsestLevel_; level >= 1; level /= 2) {
       run.traceLevel(level);

@@ -181,6 +181,10 @@ public:
     });
   }
 
+  void pilotDone(const RayCounts& counts) override {
+    publish([&] { work_.counts += counts; });
+  }
+
   void pass1Complete(double avgmax) override {
     publish([&] {
       work_.avgmax = avgmax;

@@ -73,12 +73,11 @@ private:
   // internal reflection.
   Color transmission(const Ray& ray, const Incidence& at, const Material& m, int depth,
                      RayCounts& counts, RayTreeNode* record);
-  // The bailout's test for a new ray from a hit on `m` at `depth`: true when
-  // its bound, beyond[depth + 1], fits in its share of the allowance.
-  bool bailsOut(const Material& m, int depth) const;
-  // trace() of a new ray from a hit on `m`, with its share of the allowance.
-  Color traceNew(const Ray& ray, const Material& m, int depth, RayCounts& counts,
-                 RayTreeNode* record, const PrimitiveRef* skip);
+  // With a bailout, the new ray `ray` of `kind` from a hit on `m` at `depth`:
+  // skipped when its bound, beyond[depth + 1], fits in its share of the
+  // allowance, else traced with that share (see tracer.cpp).
+  Color traceOrSkip(const Ray& ray, RayKind kind, const Material& m, int depth, RayCounts& counts,
+                    RayTreeNode* record, const PrimitiveRef* skip);
   // Whether anything but `skip` lies on `ray` before `length` (the light).
   bool blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                int depth);

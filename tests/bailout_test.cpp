@@ -35,6 +35,30 @@ TEST(BailoutBound, IsTheGeometricSeriesOfTheBrightestLocalTerm) {
   EXPECT_GT(beyond[1], 1.55 + 0.75 * (1.55 + 0.75 * 1.55)); // never below the hand value
 }
 
+// kOneSquare at depth 3: beyond = 3.5844, 2.7125, 1.55 (by hand, above), and
+// (ksr + kst) = 0.75 is the only one. A ray of depth 3 could be skipped at
+// best when 1.55 * 0.75^2 = 0.8719 <= W * 3.5844 / 128: from W = 31.14 on.
+TEST(BailoutBound, SaysWhenNoRayCouldEverBeSkipped) {
+  const Scene scene = parseScene(kOneSquare, "square.sc");
+  const std::vector<double> beyond = radianceBounds(scene, 3);
+  EXPECT_FALSE(bailoutCanSkip(scene, beyond, 0.5));
+  EXPECT_FALSE(bailoutCanSkip(scene, beyond, 31.0));
+  EXPECT_TRUE(bailoutCanSkip(scene, beyond, 32.0));
+  // Then the render is the exact one, without a pilot.
+  RenderSettings s;
+  s.width = s.height = 8;
+  s.maxDepth = 3;
+  const auto accel = makeAccel(scene, AccelKind::Bvh);
+  const RenderResult exact = render(scene, *accel, s);
+  s.bailout = 0.5;
+  const RenderResult bailed = render(scene, *accel, s);
+  EXPECT_EQ(bailed.counts, exact.counts);
+  EXPECT_EQ(bailed.film.radiance, exact.film.radiance);
+  // A scene whose materials start no new rays has nothing to skip.
+  const Scene matte = parseScene("light 0 0 2  1 1 1\nsphere 0 0 0 1\n", "matte.sc");
+  EXPECT_FALSE(bailoutCanSkip(matte, radianceBounds(matte, 5), 255.0));
+}
+
 TEST(BailoutBound, NoBoundWhenALightTouchesABox) {
   const Scene scene =
       parseScene("light 0 0 0  1 1 1\npolygon 4  -1 -1 0  1 -1 0  1 1 0  -1 1 0\n", "touch.sc");

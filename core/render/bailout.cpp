@@ -60,4 +60,20 @@ std::vector<double> radianceBounds(const Scene& scene, int maxDepth) {
   return beyond;
 }
 
+bool bailoutCanSkip(const Scene& scene, const std::vector<double>& beyond, double levels) {
+  double smallest = std::numeric_limits<double>::infinity(); // of (ksr + kst) > 0
+  for (const Material& m : scene.materials)
+    if (m.ksr + m.kst > 0.0) smallest = std::min(smallest, m.ksr + m.kst);
+  if (std::isinf(smallest)) return false; // no material starts a new ray
+  const int maxDepth = int(beyond.size()) - 1;
+  const double largest = levels * beyond[1] / 128.0; // the eye ray's allowance at most
+  // Hits at depths 1..k lie above a ray of depth k + 1: its allowance is at
+  // most largest / smallest^(k - 1), and its test multiplies by a
+  // (ksr + kst) of at least `smallest`.
+  double shares = smallest; // smallest^k
+  for (int k = 1; k < maxDepth; ++k, shares *= smallest)
+    if (beyond[std::size_t(k) + 1] * shares <= largest) return true;
+  return false;
+}
+
 } // namespace prism

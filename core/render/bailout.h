@@ -38,6 +38,14 @@ std::vector<double> lightClearances(const Scene& scene);
 // a box: nothing is then ever skipped.
 std::vector<double> radianceBounds(const Scene& scene, int maxDepth);
 
+// False when no ray of any sample could pass the tracer's test at W =
+// `levels`, whatever the avgmax: a ray of depth k + 1 from a hit on material
+// m is skipped when beyond[k + 1] (ksr + kst)_m <= a, and a is at most
+// W * beyond[1] / 128 (no sample, so no avgmax, exceeds beyond[1]) divided
+// by (ksr + kst) of each hit above it, each at least the smallest positive
+// (ksr + kst) of the scene. Then the render traces exactly, without a pilot.
+bool bailoutCanSkip(const Scene& scene, const std::vector<double>& beyond, double levels);
+
 // The radiance W = `levels` levels stand for when the picture is exposed by
 // `avgmax` or more: the exposure maps avgmax / 128 to one level.
 inline double bailoutAllowance(double levels, double avgmax) { return levels * avgmax / 128.0; }

@@ -27,8 +27,12 @@ public:
       const StopCheck& stop)
       : s_(schedule), film_(film), executor_(executor), sink_(sink), stop_(stop),
         counts_(std::size_t(executor.workers())) {
-    if (s_.settings_.bailout > 0.0)
+    if (s_.settings_.bailout > 0.0) {
       bound_.beyond = radianceBounds(s_.scene_, s_.settings_.maxDepth);
+      // Where no ray could be skipped the exact trace is the same picture,
+      // without the pilot's cost.
+      if (!bailoutCanSkip(s_.scene_, bound_.beyond, s_.settings_.bailout)) bound_.beyond.clear();
+    }
   }
 
   bool bailingOut() const { return bound_.active(); }

@@ -209,6 +209,26 @@ TEST(Bailout, ThePilotIsADepthOneTraceOfEveryPixelCentre) {
                                        depth1.counts.total());
 }
 
+// Each tracer keeps its allowance to itself and the pilot's avgmax is summed
+// in pixel order: the same picture and counts on one thread as on two.
+TEST(Bailout, IsTheSameForAnyThreadCount) {
+  const Scene scene = parseScene(kGlassMirrors, "glass-mirrors.sc");
+  RenderSettings s;
+  s.width = s.height = 24;
+  s.maxDepth = 64;
+  s.bailout = 0.5;
+  s.tileSize = 8;
+  const auto accel = makeAccel(scene, AccelKind::Bvh);
+  s.threads = 1;
+  const RenderResult one = render(scene, *accel, s);
+  s.threads = 2;
+  const RenderResult two = render(scene, *accel, s);
+  EXPECT_GT(one.counts.reflectedSkipped, 0u);
+  EXPECT_EQ(one.counts, two.counts);
+  EXPECT_EQ(one.avgmax, two.avgmax);
+  EXPECT_EQ(one.film.radiance, two.film.radiance);
+}
+
 TEST(Bailout, GlassBetweenMirrorsAtDepth200Ends) {
   // Exact, the ray tree doubles at every glass hit and this never ends.
   const Scene scene = parseScene(kGlassMirrors, "glass-mirrors.sc");

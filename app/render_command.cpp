@@ -60,6 +60,12 @@ void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& o) {
       ->check(CLI::Range(1, 32768));
   addRangedOption(command, "--threads", o.threads, "Render threads (0: all cores)", 0, 1024);
   command.add_flag("--jitter", o.jitter, "Jitter the 16 sub-samples within their cells");
+  command.add_flag("--no-aa", o.noAa,
+                   "No antialiasing: pass 1 only, one eye ray through each pixel centre");
+  addRangedOption(command, "--bailout", o.bailout,
+                  "Skip mirror and refracted rays that cannot change a sample's 8-bit value by "
+                  "more than W levels in all (0: exact)",
+                  0.0, 255.0);
   command
       .add_option("--accel", o.accel,
                   "Ray acceleration: bvh (SAH hierarchy, default), groups (the push/pop "
@@ -153,6 +159,8 @@ RenderSettings renderSettings(const RenderCommandOptions& o, const Scene& scene)
   settings.maxDepth = o.depth.value_or(5);
   settings.thresh = o.thresh;
   settings.jitter = o.jitter;
+  settings.noAa = o.noAa;
+  settings.bailout = o.bailout;
   settings.threads = resolveThreadCount(o.threads);
   return settings;
 }
@@ -234,6 +242,8 @@ int runRenderCommand(const RenderCommandOptions& o) {
   stats.maxDepth = settings.maxDepth;
   stats.thresh = settings.thresh;
   stats.jitter = settings.jitter;
+  stats.noAa = settings.noAa;
+  stats.bailout = settings.bailout;
   stats.threads = settings.threads;
   stats.primitives = scene.primitiveCount();
   stats.loadSeconds = loadSeconds;

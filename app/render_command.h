@@ -28,6 +28,8 @@ struct RenderCommandOptions {
   std::optional<double> fov;  // degrees
   int threads = 0;            // 0: all cores
   bool jitter = false;
+  bool noAa = false;      // pass 1 only
+  double bailout = 0.0;   // W levels; 0 traces exactly
   bool floatTiff = false; // write float radiance instead of 8-bit pixels
   AccelKind accel = AccelKind::Bvh;
   std::string statsJson;  // where to write the statistics as JSON
@@ -41,7 +43,7 @@ inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
 
 // Adds the options every rendering command shares (--depth, --thresh, --size,
-// --threads, --jitter, --accel, --eye, --lookat, --fov) to `command`, filling
+// --threads, --jitter, --no-aa, --bailout, --accel, --eye, --lookat, --fov) to `command`, filling
 // `options`.
 void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& options);
 
@@ -61,7 +63,7 @@ bool hasCameraOptions(const RenderCommandOptions& options);
 
 // The one place the options become render settings, for `render`, `view` and
 // its headless fallback: --size over the scene's resolution, depth, threshold,
-// jitter, threads.
+// jitter, no-AA, bailout, threads.
 RenderSettings renderSettings(const RenderCommandOptions& options, const Scene& scene);
 
 // Why an image of `settings`' size, at `bytesPerPixel`, cannot fit in memory

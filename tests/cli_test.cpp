@@ -52,6 +52,8 @@ TEST_F(Cli, HelpAndVersionSucceed) {
   const RunResult renderHelp = prism("render --help");
   EXPECT_EQ(renderHelp.exitCode, 0);
   EXPECT_NE(renderHelp.out.find("--thresh"), std::string::npos);
+  EXPECT_NE(renderHelp.out.find("--no-aa"), std::string::npos);
+  EXPECT_NE(renderHelp.out.find("--bailout"), std::string::npos);
   const RunResult version = prism("--version");
   EXPECT_EQ(version.exitCode, 0);
   EXPECT_NE(version.out.find("prism "), std::string::npos);
@@ -67,6 +69,8 @@ TEST_F(Cli, UsageErrorsExitWith2) {
   EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh -0.1").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --size 0 10").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --accel fast").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --bailout -0.5").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --bailout 256").exitCode, 2);
   EXPECT_EQ(prism("render " + (dir_ / "missing.sc").string() + " -o " + out).exitCode, 2);
   EXPECT_EQ(prism("render " + s + " --pixel 600 0").exitCode, 2); // default size 512
   EXPECT_FALSE(fs::exists(out));
@@ -194,6 +198,40 @@ TEST_F(Cli, WritesAn8BitRgbTiffAndJsonStatistics) {
   EXPECT_DOUBLE_EQ(stats["thresh"].get<double>(), 0.2);
   EXPECT_EQ(stats["rays"]["eye_pass1"], 1200);
   EXPECT_GT(stats["cpu_seconds"].get<double>(), 0.0);
+}
+
+// The knobs reach the render and its statistics: --no-aa traces one eye ray
+// per pixel (a sphere's edge is there to antialias), --bailout is reported
+// with the rays it skipped and its pilot's (an eye ray per pixel, and a
+// shadow ray where the sphere's lit side shows). At depth 6 a ray could be
+// skipped (0.2^4 of the bound fits in half a level), so the pilot is traced.
+TEST_F(Cli, TheKnobsAreInTheStatistics) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const fs::path out = dir_ / "o.tiff", json = dir_ / "stats.json";
+  const RunResult run =
+      prism("render " + s + " -o " + out.string() +
+            " --size 40 30 --depth 6 --no-aa --bailout 0.5 --stats-json " + json.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.err.find("(no antialiasing)"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("bailout             0.5 levels"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("rays skipped"), std::string::npos) << run.err;
+  const auto stats = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(stats["no_aa"], true);
+  EXPECT_DOUBLE_EQ(stats["bailout"].get<double>(), 0.5);
+  EXPECT_EQ(stats["rays"]["eye_pass1"], 1200);
+  EXPECT_EQ(stats["rays"]["eye_antialias"], 0);
+  EXPECT_EQ(stats["supersampled_pixels"], 0);
+  EXPECT_GT(stats["rays"]["bailout_pilot"].get<int>(), 1200);
+  EXPECT_TRUE(stats["bailout_skipped"].contains("reflected"));
+  const auto exact = prism("render " + s + " -o " + out.string() +
+                           " --size 40 30 --depth 3 --stats-json " + json.string());
+  ASSERT_EQ(exact.exitCode, 0) << exact.err;
+  EXPECT_NE(exact.err.find("bailout             0 levels (exact)"), std::string::npos);
+  EXPECT_EQ(exact.err.find("rays skipped"), std::string::npos);
+  const auto exactStats = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(exactStats["no_aa"], false);
+  EXPECT_EQ(exactStats["rays"]["bailout_pilot"], 0);
+  EXPECT_GT(exactStats["supersampled_pixels"].get<int>(), 0);
 }
 
 TEST_F(Cli, ExrKeepsFloatRadiance) {

@@ -143,6 +143,26 @@ TEST(RenderSession, ThresholdChangeKeepsPassOneAndRedoesOnlyPassTwo) {
   expectSameFilm(session.waitForResult(), renderDirect(scene, s));
 }
 
+TEST(RenderSession, NoAntialiasingKeepsPassOneAndBailoutRetracesIt) {
+  const Scene scene = shipped("glass.sc");
+  RenderSettings s = smallSettings();
+  RenderSession session(scene, s);
+  EXPECT_GT(session.waitForResult().supersampledPixels, 0);
+  s.noAa = true;
+  session.apply({.settings = s});
+  const RenderResult plain = session.waitForResult();
+  expectSameFilm(plain, renderDirect(scene, s));
+  EXPECT_EQ(plain.supersampledPixels, 0);
+  EXPECT_EQ(plain.counts.eyeAntialias, 0u);
+  EXPECT_EQ(plain.film.radiance, plain.film.centre);
+  // The bailout changes pass 1's samples (and traces its pilot first).
+  s.bailout = 0.5;
+  session.apply({.settings = s});
+  const RenderResult bailed = session.waitForResult();
+  expectSameFilm(bailed, renderDirect(scene, s));
+  EXPECT_GT(bailed.counts.bailoutPilot, 0u);
+}
+
 TEST(RenderSession, CameraAndAmbientEditsRestartWithTheEditedScene) {
   const Scene scene = shipped("table.sc");
   const RenderSettings s = smallSettings();

@@ -141,6 +141,24 @@ quit
   std::printf("%s", r.out.c_str() + report);
 }
 
+// The script's `no-aa on` switches antialiasing off as `prism render --no-aa`
+// does: Save writes its picture, which is not the antialiased one.
+TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {
+  ScratchDir dir;
+  writeFile(dir / "a.sc", scene("3 4 4"));
+  writeFile(dir / "s.txt", "wait done\nno-aa on\nwait done\nsave saved.tiff\nquit\n");
+  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o plain.tiff --no-aa -q").exitCode, 0);
+  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o aa.tiff -q").exitCode, 0);
+  const auto saved = readPicture(dir / "saved.tiff");
+  const auto plain = readPicture(dir / "plain.tiff");
+  const auto antialiased = readPicture(dir / "aa.tiff");
+  ASSERT_TRUE(saved && plain && antialiased);
+  EXPECT_TRUE(sameRgb(*saved, *plain)) << "Save differs from prism render --no-aa";
+  EXPECT_FALSE(sameRgb(*plain, *antialiased)) << "the scene has nothing to antialias";
+}
+
 // Reads the app's stdout line by line while it runs, so the test can edit the
 // scene exactly when the script says it is ready.
 class Session {

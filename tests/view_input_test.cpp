@@ -311,8 +311,9 @@ TEST_F(ViewInput, ButtonsAndCheckboxesWorkByMouse) {
   EXPECT_TRUE(app_.waitFor([&] {
     return app_.stderrText().find("no such directory") != std::string::npos;
   })) << app_.stderrText();
-  for (const char* box : {"Render/jitter sub-samples", "Display/supersampled pixels (O)",
-                          "Display/lights (L)", "Display/lock exposure (E)"}) {
+  for (const char* box :
+       {"Render/jitter sub-samples", "Render/no antialiasing", "Display/supersampled pixels (O)",
+        "Display/lights (L)", "Display/lock exposure (E)"}) {
     const std::string before = app_.value(box);
     ASSERT_TRUE(before == "true" || before == "false") << box << ": " << before;
     ASSERT_TRUE(app_.click(box, 0.05));

@@ -80,6 +80,15 @@ quit
   EXPECT_EQ(a[23].line, 25);
 }
 
+TEST(ViewScript, ParsesTheNoAntialiasingSwitch) {
+  const auto a = parseScript("no-aa on\nno-aa off\n", "s.txt");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].op, ScriptOp::NoAa);
+  EXPECT_EQ(a[0].values, std::vector<double>({1.0}));
+  EXPECT_EQ(a[1].op, ScriptOp::NoAa);
+  EXPECT_EQ(a[1].values, std::vector<double>({0.0}));
+}
+
 TEST(ViewScript, ParsesTheInspectionAndComparisonActions) {
   const auto a = parseScript("exposure lock\nev -1.5\nexposure auto\npicture fit\npicture 400\n"
                              "inspect 12 34\npin\ncompare split 0.25\ncompare flip\n"

@@ -108,6 +108,7 @@ void renderSection(ViewController& c, WindowState& state) {
     changed = true;
   }
   changed |= ui::checkbox("jitter sub-samples", &s.jitter);
+  changed |= ui::checkbox("no antialiasing", &s.noAa);
   dimText("image " + std::to_string(s.width) + " x " + std::to_string(s.height));
   if (changed) edit(c, state, [&] { c.apply(SettingsEdit{s}); });
 }

@@ -17,8 +17,8 @@ bool same(const Light& a, const Light& b) {
 
 bool same(const RenderSettings& a, const RenderSettings& b) {
   return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth &&
-         a.thresh == b.thresh && a.jitter == b.jitter && a.threads == b.threads &&
-         a.tileSize == b.tileSize;
+         a.thresh == b.thresh && a.jitter == b.jitter && a.noAa == b.noAa &&
+         a.bailout == b.bailout && a.threads == b.threads && a.tileSize == b.tileSize;
 }
 
 template <class... F> struct Overloaded : F... { using F::operator()...; };

@@ -421,6 +421,7 @@ RenderSettings ViewApp::edited(const ScriptAction& a) const {
   if (a.op == ScriptOp::Depth) s.maxDepth = a.index;
   if (a.op == ScriptOp::Thresh) s.thresh = a.values[0];
   if (a.op == ScriptOp::Jitter) s.jitter = a.values[0] != 0.0;
+  if (a.op == ScriptOp::NoAa) s.noAa = a.values[0] != 0.0;
   return s;
 }
 
@@ -443,7 +444,8 @@ void ViewApp::start(const ScriptAction& a) {
   case ScriptOp::Frames: framesAtStart_ = frameNumber_; break;
   case ScriptOp::Depth:
   case ScriptOp::Thresh:
-  case ScriptOp::Jitter: controller_->apply(SettingsEdit{edited(a)}); break;
+  case ScriptOp::Jitter:
+  case ScriptOp::NoAa: controller_->apply(SettingsEdit{edited(a)}); break;
   case ScriptOp::Ambient: controller_->apply(AmbientEdit{vec(0)}); break;
   case ScriptOp::Light:
   case ScriptOp::Intensity: {

@@ -111,6 +111,7 @@ const std::map<std::string, ScriptOp>& keywords() {
       {"depth", ScriptOp::Depth},
       {"thresh", ScriptOp::Thresh},
       {"jitter", ScriptOp::Jitter},
+      {"no-aa", ScriptOp::NoAa},
       {"ambient", ScriptOp::Ambient},
       {"light", ScriptOp::Light},
       {"intensity", ScriptOp::Intensity},
@@ -191,6 +192,7 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     }
     return;
   case ScriptOp::Jitter:
+  case ScriptOp::NoAa:
   case ScriptOp::Overlay:
   case ScriptOp::Markers:
     if (p.arity(t, 1, "on or off")) a.values.push_back(p.onOff(t[1]));

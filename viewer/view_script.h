@@ -9,7 +9,7 @@
 //                            with errors (counted from the script's start)
 //   frames N                 let N frames pass
 //   timeout SECONDS          how long any later action may block [60]
-//   depth D | thresh T | jitter on|off | ambient R G B
+//   depth D | thresh T | jitter on|off | no-aa on|off | ambient R G B
 //   light N X Y Z            move light N (from 1)
 //   intensity N R G B        set light N's intensity
 //   orbit YAW PITCH          degrees;  pan DX DY (pixels);  zoom FACTOR;  reset
@@ -44,6 +44,7 @@ enum class ScriptOp {
   Depth,
   Thresh,
   Jitter,
+  NoAa,
   Ambient,
   Light,
   Intensity,

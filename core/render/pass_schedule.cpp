@@ -1,5 +1,6 @@
 #include "core/render/pass_schedule.h"
 
+#include "core/render/bailout.h"
 #include "core/render/tracer.h"
 
 #include <algorithm>
@@ -25,7 +26,52 @@ public:
   Run(const PassSchedule& schedule, Film& film, Executor& executor, ScheduleSink& sink,
       const StopCheck& stop)
       : s_(schedule), film_(film), executor_(executor), sink_(sink), stop_(stop),
-        counts_(std::size_t(executor.workers())) {}
+        counts_(std::size_t(executor.workers())) {
+    if (s_.settings_.bailout > 0.0) {
+      bound_.beyond = radianceBounds(s_.scene_, s_.settings_.maxDepth);
+      // Where no ray could be skipped the exact trace is the same picture,
+      // without the pilot's cost.
+      if (!bailoutCanSkip(s_.scene_, bound_.beyond, s_.settings_.bailout)) bound_.beyond.clear();
+    }
+  }
+
+  bool bailingOut() const { return bound_.active(); }
+  // Sets the radiance the bailout may skip per sample from a lower bound on
+  // the avgmax the picture will be exposed by.
+  void allowFor(double avgmax) {
+    bound_.allowance = bailoutAllowance(s_.settings_.bailout, avgmax);
+  }
+
+  // The bailout's lower bound on pass 1's avgmax, before pass 1: the avgmax
+  // of a depth-1 trace of every pixel centre. Each pass-1 sample holds its
+  // depth-1 terms computed the same way, plus non-negative deeper ones, so
+  // it is at least that sample channel by channel, and so is the mean of the
+  // largest channels (the floats and the sums round monotonically). Its rays
+  // are counted as bailoutPilot; its samples go nowhere.
+  double pilotAvgmax() {
+    std::vector<Rgb> local(film_.pixelCount(), Rgb(0.0f));
+    executor_.forEach(
+        s_.tileCount(),
+        [&](int item, int worker) {
+          Tracer tracer(s_.scene_, s_.accel_, 1);
+          RayCounts counts;
+          std::vector<Sample> samples;
+          for (const Tile& block : splitTile(s_.tiles_[std::size_t(item)], kBundleSide)) {
+            if (stopped()) return;
+            Pixel pixels[Accel::kMaxBundle];
+            std::size_t n = 0;
+            for (int y = block.y0; y < block.y1; ++y)
+              for (int x = block.x0; x < block.x1; ++x)
+                pixels[n++] = {x, y};
+            tracePixelCentres(tracer, s_.camera_, std::span(pixels, n), samples, counts);
+          }
+          for (const Sample& sample : samples)
+            local[film_.index(sample.x, sample.y)] = sample.radiance;
+          counts_[std::size_t(worker)].bailoutPilot += counts.total();
+        },
+        stop_);
+    return averageMax(local);
+  }
 
   bool stopped() const { return stop_ && stop_(); }
 
@@ -80,6 +126,7 @@ private:
         [&](int item, int worker) {
           const Tile& tile = s_.tiles_[std::size_t(item)];
           Tracer tracer(s_.scene_, s_.accel_, s_.settings_.maxDepth);
+          tracer.setBailout(bound_);
           TileSamples out{pass, level, item, {}, {}};
           if (pass == 1)
             out.samples.reserve(std::size_t((tile.x1 - tile.x0 + level - 1) / level) *
@@ -103,12 +150,18 @@ private:
   ScheduleSink& sink_;
   const StopCheck& stop_;
   std::vector<RayCounts> counts_; // per worker
+  BailoutBound bound_;            // inactive unless settings.bailout > 0
 };
 
 bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const StopCheck& stop,
                        Pass1 pass1) const {
   Run run(*this, film, executor, sink, stop);
   if (pass1 == Pass1::Trace) {
+    if (run.bailingOut()) {
+      run.allowFor(run.pilotAvgmax());
+      if (run.stopped()) return false;
+      sink.pilotDone(run.counts());
+    }
     for (int level = coarsestLevel_; level >= 1; level /= 2) {
       run.traceLevel(level);
       if (run.stopped()) return false;
@@ -123,7 +176,9 @@ bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const
   const double avgmax = averageMax(film.centre);
   sink.pass1Complete(avgmax);
 
-  run.antialias(avgmax);
+  // Pass 2's samples are exposed by this avgmax: their allowance is its W levels.
+  run.allowFor(avgmax);
+  if (!settings_.noAa) run.antialias(avgmax);
   if (run.stopped()) return false;
 
   RayCounts counts = run.counts();

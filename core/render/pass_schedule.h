@@ -57,7 +57,8 @@ struct TileSamples {
   RayCounts counts; // every ray traced for these samples
 };
 
-// Told what the schedule produces, in this order: levelStarted for each
+// Told what the schedule produces, in this order: pilotDone when a bailout
+// traced its pilot (core/render/bailout.h), levelStarted for each
 // level, tileDone for each of its tiles, pass1Complete, tileDone for each
 // tile of pass 2, done. tileDone is called from the executor's workers,
 // possibly at the same time; the others from the thread that runs the
@@ -65,6 +66,8 @@ struct TileSamples {
 class ScheduleSink {
 public:
   virtual ~ScheduleSink() = default;
+  // The pilot's rays (RayCounts::bailoutPilot), which no tile reports.
+  virtual void pilotDone(const RayCounts& counts) { (void)counts; }
   virtual void levelStarted(int level) { (void)level; }
   virtual void tileDone(const TileSamples& tile) { (void)tile; }
   virtual void pass1Complete(double avgmax) { (void)avgmax; }

@@ -115,14 +115,15 @@ void RenderSession::apply(const SessionEdit& edit) {
       throw std::out_of_range("light " + std::to_string(index + 1) +
                               " does not exist: the scene has " +
                               std::to_string(scene_->lights.size()));
-  // thresh and jitter only steer pass 2: a finished pass 1 stays valid when
+  // thresh, jitter and no-AA only steer pass 2: a finished pass 1 stays valid when
   // nothing else changes.
   const RenderSettings& old = settings_;
   const bool onlyPass2 =
       !edit.camera && !edit.ambient && edit.lights.empty() &&
       (!edit.settings ||
        (old.width == edit.settings->width && old.height == edit.settings->height &&
-        old.maxDepth == edit.settings->maxDepth && old.tileSize == edit.settings->tileSize));
+        old.maxDepth == edit.settings->maxDepth && old.tileSize == edit.settings->tileSize &&
+        old.bailout == edit.settings->bailout));
   bool pass1Complete;
   {
     std::lock_guard lock(mutex_);
@@ -178,6 +179,10 @@ public:
         showSupersampled(tile);
       work_.counts += tile.counts;
     });
+  }
+
+  void pilotDone(const RayCounts& counts) override {
+    publish([&] { work_.counts += counts; });
   }
 
   void pass1Complete(double avgmax) override {

@@ -20,8 +20,13 @@ struct RenderSettings {
   int maxDepth = 5;    // D >= 1; 1 is ray casting with shadows
   double thresh = 0.1; // antialiasing threshold in [0, 1], a fraction of avgmax
   bool jitter = false; // jitter sub-samples within their 4x4 cells
-  int threads = 0;     // 0: every hardware thread
-  int tileSize = 32;   // pixels per tile side: the unit of work
+  bool noAa = false;   // pass 1 only: one eye ray per pixel, no pass 2
+  // W >= 0: skip mirror and refracted rays whose whole contribution to a
+  // sample stays within W levels of its 8-bit value (core/render/bailout.h);
+  // 0 traces exactly.
+  double bailout = 0.0;
+  int threads = 0;   // 0: every hardware thread
+  int tileSize = 32; // pixels per tile side: the unit of work
 };
 
 struct RenderProgress {

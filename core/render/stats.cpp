@@ -21,7 +21,9 @@ std::string formatStatsText(const RenderStats& s) {
   text += line("machine             %s\n", s.machine.c_str());
   text += line("image               %d x %d = %lld pixels\n", s.width, s.height, s.pixels());
   text += line("max depth           %d\n", s.maxDepth);
-  text += line("threshold           %g%s\n", s.thresh, s.jitter ? " (jittered sub-samples)" : "");
+  text += line("threshold           %g%s%s\n", s.thresh, s.jitter ? " (jittered sub-samples)" : "",
+               s.noAa ? " (no antialiasing)" : "");
+  text += line("bailout             %g levels%s\n", s.bailout, s.bailout > 0.0 ? "" : " (exact)");
   text += line("primitives          %zu (accel: %s)\n", s.primitives, s.accel.c_str());
   text += line("threads             %d\n", s.threads);
   text += line("load / build        %.3f s / %.3f s (wall)\n", s.loadSeconds, s.buildSeconds);
@@ -34,6 +36,12 @@ std::string formatStatsText(const RenderStats& s) {
   text += line("reflected rays      %llu\n", (unsigned long long)c.reflected);
   text += line("transmitted rays    %llu (total internal reflections: %llu)\n",
                (unsigned long long)c.transmitted, (unsigned long long)c.tirEvents);
+  if (s.bailout > 0.0)
+    text += line("bailout             %llu rays skipped (reflected: %llu, transmitted: %llu); "
+                 "pilot rays: %llu\n",
+                 (unsigned long long)(c.reflectedSkipped + c.transmittedSkipped),
+                 (unsigned long long)c.reflectedSkipped, (unsigned long long)c.transmittedSkipped,
+                 (unsigned long long)c.bailoutPilot);
   text += line("total rays          %llu\n", (unsigned long long)c.total());
   text += line("rays per pixel      %.3f\n", s.raysPerPixel());
   text += line("supersampled        %lld pixels (%.2f%%)\n", s.supersampledPixels,
@@ -53,6 +61,8 @@ std::string formatStatsJson(const RenderStats& s) {
       {"max_depth", s.maxDepth},
       {"thresh", s.thresh},
       {"jitter", s.jitter},
+      {"no_aa", s.noAa},
+      {"bailout", s.bailout},
       {"accel", s.accel},
       {"threads", s.threads},
       {"primitives", s.primitives},
@@ -67,8 +77,11 @@ std::string formatStatsJson(const RenderStats& s) {
         {"shadow", c.shadow},
         {"reflected", c.reflected},
         {"transmitted", c.transmitted},
+        {"bailout_pilot", c.bailoutPilot},
         {"total", c.total()}}},
       {"tir_events", c.tirEvents},
+      {"bailout_skipped",
+       {{"reflected", c.reflectedSkipped}, {"transmitted", c.transmittedSkipped}}},
       {"rays_per_pixel", s.raysPerPixel()},
       {"supersampled_pixels", s.supersampledPixels},
       {"supersampled_share", s.supersampledShare()},

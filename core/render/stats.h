@@ -17,6 +17,8 @@ struct RenderStats {
   int maxDepth = 0;
   double thresh = 0.0;
   bool jitter = false;
+  bool noAa = false;
+  double bailout = 0.0; // W levels; 0: exact
   int threads = 0;
   std::size_t primitives = 0;
   double loadSeconds = 0.0;  // parsing the scene (wall)

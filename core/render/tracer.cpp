@@ -81,6 +81,46 @@ void Tracer::traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCou
         (found >> i & 1u) != 0 ? shade(rays[i], hits[i], 1, counts, nullptr) : scene_.background;
 }
 
+void Tracer::setBailout(const BailoutBound& bound) {
+  bailout_ = bound.active() ? &bound : nullptr;
+  allowance_ = bound.allowance;
+}
+
+// The proof (docs/rendering-model.md#bailout): a ray of weight w and
+// allowance a gives each new ray c (coefficient k_c) the allowance
+// a / (ksr + kst), so w k_c a / (ksr + kst) summed over its new rays is at
+// most w a. A skipped ray brings back at most beyond[depth + 1], so skipping
+// it when beyond[depth + 1] <= a / (ksr + kst) keeps its loss within its
+// share; a traced one keeps its descendants' within it by induction.
+namespace {
+// A new ray's node in the ray tree, when one is recorded.
+RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
+  if (record == nullptr) return nullptr;
+  RayTreeNode* child = &record->children.emplace_back();
+  child->kind = kind;
+  return child;
+}
+} // namespace
+
+// Out of line, so the exact trace keeps its code and pays one test of
+// bailout_ per new ray: the rest of reflection() or transmission() with a
+// bailout, skipping `ray` or tracing it with its share of the allowance.
+[[gnu::noinline]] Color Tracer::traceOrSkip(const Ray& ray, RayKind kind, const Material& m,
+                                            int depth, RayCounts& counts, RayTreeNode* record,
+                                            const PrimitiveRef* skip) {
+  const bool mirror = kind == RayKind::Reflected;
+  if (bailout_->beyond[std::size_t(depth) + 1] * (m.ksr + m.kst) <= allowance_) {
+    ++(mirror ? counts.reflectedSkipped : counts.transmittedSkipped);
+    return Color(0.0);
+  }
+  ++(mirror ? counts.reflected : counts.transmitted);
+  const double parent = allowance_;
+  allowance_ = parent / (m.ksr + m.kst);
+  const Color radiance = trace(ray, depth + 1, counts, childOf(record, kind), skip);
+  allowance_ = parent;
+  return radiance;
+}
+
 bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                      int depth) {
   const Interval range{0.0, length};
@@ -213,14 +253,11 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
                                                        const Material& m, int depth,
                                                        RayCounts& counts, RayTreeNode* record) {
   if (!(depth < maxDepth_ && m.ksr > 0.0)) return Color(0.0);
-  ++counts.reflected;
-  RayTreeNode* child = nullptr;
-  if (record != nullptr) {
-    child = &record->children.emplace_back();
-    child->kind = RayKind::Reflected;
-  }
   const Ray r{at.frame.above, reflect(ray.dir, at.nr)};
-  return m.ksr * trace(r, depth + 1, counts, child, at.skip);
+  if (bailout_ != nullptr)
+    return m.ksr * traceOrSkip(r, RayKind::Reflected, m, depth, counts, record, at.skip);
+  ++counts.reflected;
+  return m.ksr * trace(r, depth + 1, counts, childOf(record, RayKind::Reflected), at.skip);
 }
 
 [[gnu::always_inline]] inline Color Tracer::transmission(const Ray& ray, const Incidence& at,
@@ -235,13 +272,12 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
     if (record != nullptr) record->totalInternalReflection = true;
     return Color(0.0);
   }
+  const Ray t{at.frame.below, dir};
+  // After the test for total internal reflection, which is counted as usual.
+  if (bailout_ != nullptr)
+    return m.kst * traceOrSkip(t, RayKind::Transmitted, m, depth, counts, record, at.skip);
   ++counts.transmitted;
-  RayTreeNode* child = nullptr;
-  if (record != nullptr) {
-    child = &record->children.emplace_back();
-    child->kind = RayKind::Transmitted;
-  }
-  return m.kst * trace({at.frame.below, dir}, depth + 1, counts, child, at.skip);
+  return m.kst * trace(t, depth + 1, counts, childOf(record, RayKind::Transmitted), at.skip);
 }
 
 } // namespace prism

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/accel/accel.h"
+#include "core/render/bailout.h"
 #include "core/render/ray_counts.h"
 #include "core/render/ray_tree.h"
 
@@ -45,6 +46,11 @@ public:
 
   int maxDepth() const { return maxDepth_; }
 
+  // Skip mirror and refracted rays by `bound` (core/render/bailout.h) from now
+  // on; an inactive bound (the default) traces exactly. `bound` must outlive
+  // the tracer's use of it.
+  void setBailout(const BailoutBound& bound);
+
 private:
   // The surface as the incoming ray meets it (see tracer.cpp).
   struct Incidence;
@@ -67,6 +73,11 @@ private:
   // internal reflection.
   Color transmission(const Ray& ray, const Incidence& at, const Material& m, int depth,
                      RayCounts& counts, RayTreeNode* record);
+  // With a bailout, the new ray `ray` of `kind` from a hit on `m` at `depth`:
+  // skipped when its bound, beyond[depth + 1], fits in its share of the
+  // allowance, else traced with that share (see tracer.cpp).
+  Color traceOrSkip(const Ray& ray, RayKind kind, const Material& m, int depth, RayCounts& counts,
+                    RayTreeNode* record, const PrimitiveRef* skip);
   // Whether anything but `skip` lies on `ray` before `length` (the light).
   bool blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                int depth);
@@ -76,6 +87,12 @@ private:
   int maxDepth_;
   // The last blocker per (depth - 1) * lights + light; empty with BlockerCache::Off.
   std::vector<std::optional<PrimitiveRef>> lastBlocker_;
+  // The bailout: null traces exactly (and costs one test per new ray).
+  const BailoutBound* bailout_ = nullptr;
+  // The current ray's allowance per unit of its weight: the radiance its
+  // skipped descendants may sum to, divided by the product of the
+  // coefficients on its path. Set for each new ray and restored after it.
+  double allowance_ = 0.0;
 };
 
 } // namespace prism

@@ -222,5 +222,264 @@ TEST(RayOffset, ShippedScenesKeepTheirPictureAtExtremeScales) {
   }
 }
 
+// ---------------------------------------------------------------------------
+// Rays through vertices and edges, surfaces at extreme sizes
+
+// Rays aimed at the vertices and edges of a closed convex solid (the faces
+// given) from outside, each in a direction that goes on into the solid there
+// (within 17 degrees of the direction to its centre: inside the solid's
+// corner at every vertex and edge of a cube or an octahedron). Each must meet
+// the solid no farther than the point aimed at; returns how many do not,
+// through vertices, edge midpoints and points a third along edges, of 64
+// rays each per face corner.
+std::array<int, 3> missesThroughVerticesAndEdges(const Scene& scene,
+                                                 const std::vector<std::vector<Vec3>>& faces) {
+  const auto accel = makeAccel(scene, AccelKind::Groups);
+  Vec3 centre(0.0);
+  int count = 0;
+  for (const std::vector<Vec3>& face : faces)
+    for (const Vec3& v : face) {
+      centre += v;
+      ++count;
+    }
+  centre /= double(count);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::array<int, 3> misses{};
+  for (const std::vector<Vec3>& face : faces)
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const Vec3& a = face[i];
+      const Vec3& b = face[(i + 1) % face.size()];
+      for (int which = 0; which < 3; ++which)
+        for (int k = 0; k < 64; ++k) {
+          const Vec3 target = which == 0 ? a : which == 1 ? 0.5 * (a + b) : a + 0.3 * (b - a);
+          Vec3 tilt(unit(rng), unit(rng), unit(rng));
+          tilt = 0.3 * tilt / std::max(1.0, glm::length(tilt));
+          const Vec3 from = target + 12.0 * glm::normalize(glm::normalize(target - centre) + tilt);
+          const Ray ray{from, glm::normalize(target - from)};
+          Hit hit;
+          if (!accel->closestHit(ray, Interval{}, nullptr, hit) ||
+              !(hit.t <= glm::length(target - from) * (1.0 + 1e-12))) {
+            ++misses[std::size_t(which)];
+            continue;
+          }
+          EXPECT_TRUE(isFinite(scene.surfaceAt(hit.primitive, ray.at(hit.t)).outward));
+        }
+    }
+  return misses;
+}
+
+// A closed octahedron of mesh triangles, turned and moved so that no
+// coordinate is special: the watertight test leaves no hole at a vertex or
+// along an edge (1536 rays of each sort).
+TEST(Watertight, RaysIntoAClosedMeshThroughVerticesAndEdgesAlwaysHit) {
+  const Scene scene = parseScene(R"(
+push rotate 1 2 3 17 translate 0.3 -0.2 0.1
+triangle  1 0 0  0 1 0  0 0 1    triangle  0 1 0  -1 0 0  0 0 1
+triangle  -1 0 0  0 -1 0  0 0 1  triangle  0 -1 0  1 0 0  0 0 1
+triangle  0 1 0  1 0 0  0 0 -1   triangle  -1 0 0  0 1 0  0 0 -1
+triangle  0 -1 0  -1 0 0  0 0 -1 triangle  1 0 0  0 -1 0  0 0 -1
+pop
+)",
+                                 "octahedron.sc");
+  std::vector<std::vector<Vec3>> faces;
+  for (const Triangle& tri : scene.shapes<Triangle>())
+    faces.push_back({scene.meshVertices[tri.vertex[0]], scene.meshVertices[tri.vertex[1]],
+                     scene.meshVertices[tri.vertex[2]]});
+  ASSERT_EQ(faces.size(), 8u);
+  EXPECT_EQ(missesThroughVerticesAndEdges(scene, faces), (std::array<int, 3>{0, 0, 0}));
+}
+
+// The same for a cube of six polygons. Disabled: it finds holes. Each polygon
+// is tested alone, on its own plane, with a half-open rule that gives a point
+// on an edge shared by two *coplanar* polygons to exactly one of them; at an
+// edge between faces at an angle nothing gives the edge to either face, and
+// measured here 734 of 1536 rays through vertices, 602 through edge
+// midpoints and 634 a third along edges pass between the faces (the polygon
+// tests alone, without the hierarchy, miss them too). A ray that
+// meets an edge to within round-off is rare in a render, but a closed solid of
+// polygons is not watertight (issue 13: what is left).
+TEST(Watertight, DISABLED_RaysIntoAClosedCubeOfPolygonsThroughVerticesAndEdgesAlwaysHit) {
+  const Scene scene = parseScene(R"(
+push rotate 3 -1 2 29 translate 5 1 -2
+polygon 4  -1 -1 -1  -1 1 -1  1 1 -1  1 -1 -1
+polygon 4  -1 -1 1  1 -1 1  1 1 1  -1 1 1
+polygon 4  -1 -1 -1  1 -1 -1  1 -1 1  -1 -1 1
+polygon 4  -1 1 -1  -1 1 1  1 1 1  1 1 -1
+polygon 4  -1 -1 -1  -1 -1 1  -1 1 1  -1 1 -1
+polygon 4  1 -1 -1  1 1 -1  1 1 1  1 -1 1
+pop
+)",
+                                 "cube.sc");
+  std::vector<std::vector<Vec3>> faces;
+  for (const Polygon& poly : scene.shapes<Polygon>())
+    faces.emplace_back(scene.polygonVertices.begin() + poly.firstVertex,
+                       scene.polygonVertices.begin() + poly.firstVertex + poly.vertexCount);
+  ASSERT_EQ(faces.size(), 6u);
+  EXPECT_EQ(missesThroughVerticesAndEdges(scene, faces), (std::array<int, 3>{0, 0, 0}));
+}
+
+// One diffuse polygon (colour C, kd) in the plane z = 0 lit by one light of
+// intensity E straight above the hit point: L = C kd (A + E / h^2), exactly
+// what a tracer of any precision must give, for polygons of extreme shape.
+Color litPolygon(const std::string& polygon, double lightHeight, const Vec3& at) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "ambient 0.1 0.1 0.1\nsurface 1 0.5 0.25 0.8 0 0 1 1\n"
+       << polygon << "\nlight " << at.x << ' ' << at.y << ' ' << lightHeight << "  1 1 1\n";
+  const Scene scene = parseScene(text.str(), "lit.sc");
+  const auto accel = makeAccel(scene, AccelKind::Groups);
+  Tracer tracer(scene, *accel, 5);
+  RayCounts counts;
+  const Color c = tracer.trace({at + Vec3(0.0, 0.0, 3.0), Vec3(0.0, 0.0, -1.0)}, 1, counts);
+  EXPECT_EQ(counts.shadow, 1u) << polygon;
+  return c;
+}
+
+TEST(ExtremeSurfaces, HugeThinAndCoincidentPolygonsShadeExactly) {
+  const Color cKd = Color(1.0, 0.5, 0.25) * 0.8;
+  const auto expected = [&](double h) { return cKd * (0.1 + 1.0 / (h * h)); };
+  const auto expectNear = [](const Color& got, const Color& want, const std::string& what) {
+    EXPECT_TRUE(isFinite(got)) << what;
+    EXPECT_LE(maxAbsComponent(got - want), 1e-12 * maxAbsComponent(want)) << what;
+  };
+  // 2e8 units across, lit from 1 unit above: the hit point is 1e8 from the
+  // edges but near the origin, so its round-off is that of small numbers.
+  expectNear(litPolygon("polygon 4  -1e8 -1e8 0  1e8 -1e8 0  1e8 1e8 0  -1e8 1e8 0", 1.0,
+                        Vec3(0.3, 0.2, 0.0)),
+             expected(1.0), "2e8 wide");
+  // The same far from the origin: the light 1e-3 above a point 1e8 away.
+  expectNear(
+      litPolygon("polygon 4  0 0 0  2e8 0 0  2e8 2e8 0  0 2e8 0", 1e-3, Vec3(1.5e8, 1.25e8, 0.0)),
+      expected(1e-3), "2e8 wide, lit at 1e8");
+  // Aspect 1e6: 1 unit long, 1e-6 wide.
+  expectNear(litPolygon("polygon 4  0 0 0  1 0 0  1 1e-6 0  0 1e-6 0", 1.0, Vec3(0.5, 0.5e-6, 0.0)),
+             expected(1.0), "aspect 1e6");
+  // Two coincident polygons: the first in the file is seen and lit, and the
+  // second, though a shadow ray starts a few hundred ulps above it, never
+  // blocks the light (it lies below the start).
+  expectNear(litPolygon("polygon 4  -1 -1 0  1 -1 0  1 1 0  -1 1 0\n"
+                        "surface 0 1 0 0.8 0 0 1 1\npolygon 4  -1 -1 0  1 -1 0  1 1 0  -1 1 0",
+                        1.0, Vec3(0.3, 0.2, 0.0)),
+             expected(1.0), "coincident");
+  // A light 1e-150 above the surface: E / h^2 = 1e300, still a double.
+  expectNear(litPolygon("polygon 4  -1 -1 0  1 -1 0  1 1 0  -1 1 0", 1e-150, Vec3(0.3, 0.2, 0.0)),
+             expected(1e-150), "light 1e-150 above");
+}
+
+// Traces the centre ray of every pixel of a size x size picture (the first
+// scene's camera) in two scenes, to the depths given, and calls f(radiance in
+// the first, radiance in the second, the second's counts): for scenes that
+// should look the same.
+template <class F>
+void forEachPixelOfBoth(const Scene& first, int firstDepth, const Scene& second, int secondDepth,
+                        int size, F f) {
+  const auto firstAccel = makeAccel(first, AccelKind::Groups);
+  const auto secondAccel = makeAccel(second, AccelKind::Groups);
+  Tracer firstTracer(first, *firstAccel, firstDepth);
+  Tracer secondTracer(second, *secondAccel, secondDepth);
+  const Camera cam(first.camera, size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const Ray ray = cam.eyeRay(x + 0.5, y + 0.5);
+      RayCounts firstCounts, secondCounts;
+      const Color a = firstTracer.trace(ray, 1, firstCounts);
+      const Color b = secondTracer.trace(ray, 1, secondCounts);
+      f(a, b, secondCounts);
+    }
+}
+
+// Glass of index 1 that transmits everything and reflects nothing bends no
+// ray and adds nothing: the pixels it covers are those of the scene without
+// it. Ambient light only, since the glass would still cast a shadow.
+TEST(ExtremeSurfaces, GlassOfIndexOneLeavesThePictureUnchanged) {
+  const std::string room = "ambient 1 1 1\nsurface 0.2 0.6 0.9 0.9 0 0 1 1\n"
+                           "polygon 4  -4 -4 -3  4 -4 -3  4 4 -3  -4 4 -3\n"
+                           "surface 0.9 0.3 0.1 0.9 0 0 1 1\nsphere 0.4 0.3 -2 0.5\n"
+                           "cone -0.8 -1 -1.5 0.3  -0.6 1 -2 0.2\n";
+  const std::string glass = "surface 1 1 1  0 0 1  0 1\nsphere 0 0 0 1\n";
+  int through = 0;
+  forEachPixelOfBoth(parseScene(room, "room.sc"), 5, parseScene(room + glass, "room.sc"), 7, 48,
+                     [&](const Color& want, const Color& got, const RayCounts& counts) {
+                       through += counts.transmitted > 0 ? 1 : 0;
+                       EXPECT_LE(maxAbsComponent(got - want), 1e-12);
+                     });
+  EXPECT_GT(through, 300); // the glass does cover a good part of the picture
+}
+
+// ---------------------------------------------------------------------------
+// Degenerate pictures and cameras
+
+// 1 x 1, 1 x N and N x 1 pictures at threshold 0 and 1 and depth 1 and 5:
+// a pixel without neighbours on a side is compared only with those it has, so
+// a 1 x 1 picture is never supersampled, and every pixel's first-pass value
+// is the trace of its centre ray (computed here with a Tracer of its own).
+TEST(Degenerate, OneByOneAndOneByNPicturesAtEveryThresholdAndDepth) {
+  const Scene scene = test::placedScene(test::kGlassAndMirror, {}, "room.sc");
+  const auto accel = makeAccel(scene, AccelKind::Groups);
+  for (const auto& [w, h] : {std::pair{1, 1}, std::pair{1, 9}, std::pair{9, 1}})
+    for (const double thresh : {0.0, 1.0})
+      for (const int depth : {1, 5}) {
+        RenderSettings settings;
+        settings.width = w;
+        settings.height = h;
+        settings.thresh = thresh;
+        settings.maxDepth = depth;
+        settings.threads = 2;
+        const RenderResult r = render(scene, *accel, settings);
+        ASSERT_EQ(r.film.pixelCount(), std::size_t(w * h));
+        if (w * h == 1) {
+          EXPECT_EQ(r.supersampledPixels, 0);
+        }
+        Tracer tracer(scene, *accel, depth);
+        const Camera cam(scene.camera, w, h);
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < w; ++x) {
+            RayCounts counts;
+            const Rgb want = toRgb(tracer.trace(cam.eyeRay(x + 0.5, y + 0.5), 1, counts));
+            EXPECT_EQ(r.film.centre[r.film.index(x, y)], want)
+                << w << "x" << h << " " << x << "," << y << " depth " << depth;
+            EXPECT_TRUE(std::isfinite(r.film.radiance[r.film.index(x, y)].x));
+          }
+      }
+}
+
+// The eye at the centre of a glass sphere (ir 1.5, all transmitted): every eye
+// ray leaves it along the normal, where refraction bends nothing, so the
+// picture is the room's without the sphere (no shadow ray of the room passes
+// through the small sphere around the eye).
+TEST(Degenerate, EyeInsideAGlassSphereSeesTheRoomUnbent) {
+  const std::string glass = "surface 1 1 1  0 0 1  0 1.5\nsphere 0 1.6 6 0.3\n";
+  const Scene plain = test::placedScene(test::kGlassAndMirror, {}, "room.sc");
+  const Scene inside = test::placedScene(std::string(test::kGlassAndMirror) + glass, {}, "room.sc");
+  int same = 0;
+  // The way out of the sphere takes one more level of depth.
+  forEachPixelOfBoth(plain, 5, inside, 6, 40,
+                     [&](const Color& want, const Color& got, const RayCounts& counts) {
+                       EXPECT_TRUE(isFinite(got));
+                       EXPECT_GE(counts.transmitted, 1u);
+                       same += maxAbsComponent(got - want) <= 1e-9 * (1.0 + maxAbsComponent(want));
+                     });
+  EXPECT_EQ(same, 1600);
+}
+
+// A camera looking down to within 1e-7 rad of its `up` vector still has an
+// orthonormal frame: the centre ray points at `lookat` and the top and bottom
+// rows are the field of view apart.
+TEST(Degenerate, CameraLookingAlmostAlongUp) {
+  for (const double tilt : {1e-3, 1e-7}) {
+    CameraSpec spec;
+    spec.eye = Vec3(0.0, 10.0, 0.0);
+    spec.lookat = Vec3(10.0 * tilt, 0.0, 0.0); // 10 below, tilt * 10 aside
+    spec.up = Vec3(0.0, 1.0, 0.0);
+    spec.fov = 40.0;
+    const Camera cam(spec, 64, 48);
+    const Vec3 centre = cam.eyeRay(32.0, 24.0).dir;
+    EXPECT_LE(glm::length(centre - glm::normalize(spec.lookat - spec.eye)), 1e-12) << tilt;
+    const double angle = std::acos(glm::dot(cam.eyeRay(32.0, 0.0).dir, cam.eyeRay(32.0, 48.0).dir));
+    EXPECT_NEAR(angle * 180.0 / 3.14159265358979323846, 40.0, 1e-9) << tilt;
+  }
+}
+
 } // namespace
 } // namespace prism

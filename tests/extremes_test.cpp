@@ -481,5 +481,48 @@ TEST(Degenerate, CameraLookingAlmostAlongUp) {
   }
 }
 
+// A ray inside glass (ir 1.5, kst 1, nothing else) meeting its flat top at
+// the critical angle asin(1 / 1.5) and 1e-9 rad either side. Below it the
+// ray leaves, grazing (cos of the refracted angle sqrt(2 ir cos(theta_c)
+// 1e-9) = 4.7e-5), and brings the background back; at it and above it the
+// reflection is total and, with ksr = 0, nothing comes back: the margin of
+// docs/rendering-model.md (k <= 1e-12) takes the critical angle itself.
+TEST(Degenerate, TotalInternalReflectionJustBelowAtAndJustAboveTheCriticalAngle) {
+  const Scene scene = parseScene("background 0.25 0.5 1\nsurface 1 1 1  0 0 1  0 1.5\n"
+                                 "polygon 4  -10 -10 0  10 -10 0  10 10 0  -10 10 0\n",
+                                 "slab.sc");
+  const auto accel = makeAccel(scene, AccelKind::Groups);
+  Tracer tracer(scene, *accel, 2);
+  const double critical = std::asin(1.0 / 1.5);
+  for (const double delta : {-1e-6, -1e-9, 0.0, 1e-9, 1e-6}) {
+    const double theta = critical + delta;
+    RayCounts counts;
+    const Color c = tracer.trace(
+        {Vec3(0.0, 0.0, -1.0), Vec3(std::sin(theta), 0.0, std::cos(theta))}, 1, counts);
+    const bool total = delta >= 0.0;
+    EXPECT_EQ(counts.tirEvents, total ? 1u : 0u) << delta;
+    EXPECT_EQ(counts.transmitted, total ? 0u : 1u) << delta;
+    EXPECT_EQ(c, total ? Color(0.0) : scene.background) << delta;
+  }
+}
+
+// A scene without lights casts no shadow ray anywhere, and its picture is
+// what ambient light (none here) and the background make of it: finite,
+// and not black, since the background shows.
+TEST(Degenerate, SceneWithoutLights) {
+  Scene scene = test::placedScene(test::kGlassAndMirror, {}, "room.sc");
+  scene.lights.clear();
+  const auto accel = makeAccel(scene, AccelKind::Groups);
+  RenderSettings settings;
+  settings.width = settings.height = 24;
+  settings.threads = 2;
+  const RenderResult r = render(scene, *accel, settings);
+  EXPECT_EQ(r.counts.shadow, 0u);
+  EXPECT_GT(r.counts.transmitted, 0u);
+  EXPECT_GT(r.avgmax, 0.0);
+  for (const Rgb& p : r.film.radiance)
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+}
+
 } // namespace
 } // namespace prism

@@ -115,6 +115,9 @@ const char* const kOneOfEachKind[] = {
     "polygon 5  -1 -0.7 -0.19  0.9 -0.8 -0.02  1.1 0.4 0.24  0.2 1.0 0.27  -0.9 0.6 0.08",
     "push rotate 1 1 0 20 scale 1 1 0.6 cone 0 -1 0 0.8  0.1 1 0.1 0.3 pop",
     "triangle  -1 -0.8 0.2  1.2 -0.5 -0.3  0.1 1.1 0.4",
+    // Sheared hard: a disc 1e-4 thick, turned, then squashed along another axis.
+    "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-4 sphere 0 0 0 1 pop",
+    "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-3 cone 0 0 0 1  0 0 1 0.5 pop",
 };
 
 // The largest |distance of the computed hit point from the surface| over

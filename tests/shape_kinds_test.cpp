@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -25,6 +26,9 @@ bool intersect(const TestBox&, const ShapeArrays&, const Ray&, Interval, double&
 Vec3 outwardNormal(const TestBox&, const ShapeArrays&, const Vec3&) { return Vec3(0, 0, 1); }
 Vec2 uvAt(const TestBox&, const ShapeArrays&, const Vec3& p) { return {p.x, p.y}; }
 Aabb boundsOf(const TestBox& b, const ShapeArrays&) { return b.box; }
+double roundoffScale(const TestBox& b, const ShapeArrays&) {
+  return std::max(maxAbsComponent(b.box.lo), maxAbsComponent(b.box.hi));
+}
 
 // The same without bounds: not a shape kind.
 struct Unbounded {
@@ -38,6 +42,7 @@ bool intersect(const Unbounded&, const ShapeArrays&, const Ray&, Interval, doubl
 }
 Vec3 outwardNormal(const Unbounded&, const ShapeArrays&, const Vec3&) { return Vec3(0, 0, 1); }
 Vec2 uvAt(const Unbounded&, const ShapeArrays&, const Vec3&) { return Vec2(0.0); }
+[[maybe_unused]] double roundoffScale(const Unbounded&, const ShapeArrays&) { return 0.0; }
 
 // With bounds but without surface coordinates: not a shape kind either.
 struct Uncharted {
@@ -51,6 +56,7 @@ bool intersect(const Uncharted&, const ShapeArrays&, const Ray&, Interval, doubl
 }
 Vec3 outwardNormal(const Uncharted&, const ShapeArrays&, const Vec3&) { return Vec3(0, 0, 1); }
 [[maybe_unused]] Aabb boundsOf(const Uncharted&, const ShapeArrays&) { return Aabb{}; }
+[[maybe_unused]] double roundoffScale(const Uncharted&, const ShapeArrays&) { return 0.0; }
 
 static_assert(ShapeKind<TestBox>);
 static_assert(!ShapeKind<Unbounded>);

@@ -24,12 +24,16 @@ struct Aabb {
   Vec3 centroid() const { return 0.5 * (lo + hi); }
   Vec3 extent() const { return hi - lo; }
 
-  // Grows the box by a tiny amount relative to its size and position, so flat
-  // boxes (of axis-aligned polygons) have thickness and the slab test never
-  // evaluates 0 * inf for a ray lying in a face plane.
+  // Grows the box by a tiny amount relative to its position, so flat boxes
+  // (of axis-aligned polygons) have thickness and the slab test never
+  // evaluates 0 * inf for a ray lying in a face plane: 2^-46, 64 ulps of its
+  // coordinates, as boxSlack (ray.h) for the ray's. No more: a ray leaving a
+  // surface starts a few hundred ulps off it (kRayOffsetRoundoff), and a
+  // thicker box around the neighbouring tiles of a floor would hold that
+  // start and send every shadow ray into them.
   void pad() {
     if (empty()) return; // inf - inf would make an empty box NaN
-    const double margin = 1e-9 * (maxAbsComponent(lo) + maxAbsComponent(hi)) + 1e-300;
+    const double margin = 0x1p-46 * (maxAbsComponent(lo) + maxAbsComponent(hi)) + 1e-300;
     lo -= Vec3(margin);
     hi += Vec3(margin);
   }

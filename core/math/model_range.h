@@ -38,10 +38,10 @@ inline std::string outsideModelRangeMessage(const std::string& what) {
 
 // How unevenly the map of an ellipsoid or a sheared cone may stretch space:
 // its condition number (largest over smallest singular value), bounded above by
-// stretchRatioBound. Beyond 1e10 the shape is thinner than the offset by which
-// rays leave a surface (1e-9 of the coordinates, see Tracer), so reflections
-// and shadows would start on its far side; and near 1e16 the map is singular to
-// double precision, so it could not even be written back and read again.
+// stretchRatioBound. Round-off in the shape's frame, and with it the offset by
+// which rays leave its surface (frameSkew in core/shapes/roundoff.h), grows
+// with how sheared the map is; and near 1e16 the map is singular to double
+// precision, so it could not even be written back and read again.
 inline constexpr double kMaxStretchRatio = 1e10;
 inline constexpr const char* kMaxStretchRatioText = "1e10";
 

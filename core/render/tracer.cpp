@@ -13,10 +13,14 @@ struct SurfaceFrame {
   Vec3 below; // on the far side (for refraction)
 };
 
-SurfaceFrame frameAt(const Vec3& point, const Vec3& shadingNormal, const Vec3& rayOrigin) {
+// `scale` is the primitive's SurfacePoint::roundoffScale. The offset is at
+// least 512 u of the point's largest coordinate, a few hundred of its ulps, so
+// adding it always moves the point, whichever component carries the normal.
+// The tiny floor keeps it positive for a point, origin and plane all at 0.
+SurfaceFrame frameAt(const Vec3& point, const Vec3& normal, const Vec3& rayOrigin, double scale) {
   const double offset =
-      kRayOffsetScale * (maxAbsComponent(point) + maxAbsComponent(rayOrigin)) + 1e-300;
-  return {point + offset * shadingNormal, point - offset * shadingNormal};
+      kRayOffsetRoundoff * (maxAbsComponent(point) + maxAbsComponent(rayOrigin) + scale) + 1e-300;
+  return {point + offset * normal, point - offset * normal};
 }
 
 // Mirror direction of unit `d` about unit `n`.
@@ -161,7 +165,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(surface.outward, ray.dir) > 0.0;
   const Vec3 g = leaving ? -surface.outward : surface.outward;
-  SurfaceFrame frame = frameAt(point, g, ray.origin);
+  SurfaceFrame frame = frameAt(point, g, ray.origin, surface.roundoffScale);
   // The shading normal (a smooth triangle's interpolated one), turned the same
   // way; one that faces away from the ray's side of the surface (vertex
   // normals bent past the face) would light the wrong side: `g` then.
@@ -170,7 +174,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   // Shadow and reflected rays start where the surface says (a smooth
   // triangle's curved surface, see liftedPoint), on the outward side only.
   if (!leaving && surface.outwardStart)
-    frame.above = frameAt(*surface.outwardStart, g, ray.origin).above;
+    frame.above = frameAt(*surface.outwardStart, g, ray.origin, surface.roundoffScale).above;
   // A grazing ray can meet a bent shading normal from behind; mirroring or
   // refracting about it would send the ray through the surface, so those use
   // `g` there. (For every other primitive n is g and this changes nothing.)

@@ -18,11 +18,16 @@
 
 namespace prism {
 
-// Origins of rays that leave a surface are moved off it along the normal by this
-// fraction of the magnitude of the coordinates involved. Round-off in a hit point
-// is proportional to those magnitudes, so the offset scales with the scene (docs/
-// rendering-model.md): the same picture at 1e-4 and at 1e4 units, no shadow acne.
-inline constexpr double kRayOffsetScale = 1e-9;
+// Origins of rays that leave a surface are moved off it along the normal by
+// this many times u (the unit round-off of a double, 2^-53) times the size of
+// the numbers the hit point was computed from: its own coordinates, the parent
+// ray's origin and the primitive's (SurfacePoint::roundoffScale). The hit
+// point's round-off along the normal stays below u times that size times a
+// small constant, derived kind by kind in docs/rendering-model.md and measured
+// by tests/extremes_test.cpp; this is that constant with a wide margin. So a
+// scene keeps its picture wherever it sits: the offset is a fixed number of
+// the coordinates' own ulps, not a fraction of their size.
+inline constexpr double kRayOffsetRoundoff = 0x1p-44; // 512 u: 5.7e-14
 
 class Tracer {
 public:

@@ -1,5 +1,8 @@
 #include "core/shapes/cone.h"
 
+#include "core/shapes/roundoff.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace prism {
@@ -49,6 +52,8 @@ Cone makeCone(const Vec3& base, double baseRadius, const Vec3& apex, double apex
   c.normalToWorld = glm::transpose(c.worldToObject);
   c.baseRadius = baseRadius;
   c.apexRadius = apexRadius;
+  c.roundoff = frameRoundoffScale(c.objectToWorld, c.worldToObject, c.objectToWorldOffset,
+                                  std::max({1.0, baseRadius, apexRadius}));
   // Each end is an ellipse: centre m, semi-axes r X and r Y (the frame's x and
   // y axes); along world axis i it reaches r sqrt(X_i^2 + Y_i^2) from m.
   const Mat3& m = c.objectToWorld;

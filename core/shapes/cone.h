@@ -30,6 +30,8 @@ struct Cone {
   Mat3 normalToWorld{1.0}; // transpose of worldToObject: carries gradients
   double baseRadius = 1.0;
   double apexRadius = 1.0;
+  // roundoffScale (core/shapes/roundoff.h), computed once: it takes square roots.
+  double roundoff = 0.0;
   Aabb bounds;
   std::uint32_t material = 0;
   Origin origin;

@@ -1,6 +1,7 @@
 #include "core/shapes/ellipsoid.h"
 
 #include "core/shapes/quadric.h"
+#include "core/shapes/roundoff.h"
 #include "core/shapes/sphere.h"
 
 #include <cmath>
@@ -30,6 +31,7 @@ Ellipsoid makeEllipsoid(const Mat3& linear, const Vec3& offset) {
   e.normalToWorld = glm::transpose(e.worldToObject);
   e.objectToWorld = linear;
   e.center = offset;
+  e.roundoff = frameRoundoffScale(linear, e.worldToObject, offset, 1.0);
   // The unit sphere's image extends sqrt(sum_j A_ij^2) along world axis i
   // (hypot: no underflow for a very flat ellipsoid).
   const Mat3& m = linear;

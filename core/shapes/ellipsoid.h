@@ -23,6 +23,8 @@ struct Ellipsoid {
   Aabb bounds;
   Mat3 objectToWorld{1.0};
   Vec3 center{0.0}; // objectToWorld's offset
+  // roundoffScale (core/shapes/roundoff.h), computed once: it takes square roots.
+  double roundoff = 0.0;
   std::uint32_t material = 0;
   Origin origin;
 };

@@ -11,6 +11,7 @@
 //   Vec3 outwardNormal(..., const Vec3& point)            // unit, geometric
 //   Aabb boundsOf(...)
 //   Vec2 uvAt(..., const Vec3& point)                     // surface coordinates
+//   double roundoffScale(...)                             // see roundoff.h
 //   SurfacePoint surfaceAt(..., const Vec3& point)        // optional: the
 //                                  default shades with the outward normal
 // (a kind that needs none of the ShapeArrays may provide intersect, normalAt,
@@ -26,6 +27,7 @@
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/polygon.h"
 #include "core/shapes/primitives.h"
+#include "core/shapes/roundoff.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
 #include "core/shapes/triangle.h"
@@ -77,6 +79,7 @@ concept ShapeKind = requires(const K& shape, const ShapeArrays& arrays, const Ra
   { outwardNormal(shape, arrays, point) } -> std::same_as<Vec3>;
   { uvAt(shape, arrays, point) } -> std::same_as<Vec2>;
   { boundsOf(shape, arrays) } -> std::same_as<Aabb>;
+  { roundoffScale(shape, arrays) } -> std::same_as<double>;
 };
 
 template <ShapeKind... Kinds> struct ShapeList {
@@ -118,6 +121,7 @@ SurfacePoint surfaceAt(const Kind& shape, const ShapeArrays& arrays, const Vec3&
   s.point = point;
   s.outward = outwardNormal(shape, arrays, point);
   s.shading = s.outward;
+  s.roundoffScale = roundoffScale(shape, arrays);
   return s;
 }
 

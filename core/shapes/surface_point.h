@@ -24,6 +24,10 @@ struct SurfacePoint {
   // Where rays leaving the outward side start, when not at the hit point itself
   // (a smooth triangle lifts them onto the curved surface its normals describe).
   std::optional<Vec3> outwardStart;
+  // The size of the numbers the kind's intersection test computed with besides
+  // the point and the ray's origin (roundoffScale in core/shapes/roundoff.h):
+  // with them it bounds the point's round-off, which new rays must clear.
+  double roundoffScale = 0.0;
   // Surface coordinates, each kind's own (docs/architecture.md lists them);
   // zero unless asked for with SurfaceDetail::WithCoordinates.
   Vec2 uv{0.0};

@@ -1,5 +1,7 @@
 #include "core/shapes/triangle.h"
 
+#include "core/shapes/roundoff.h"
+
 #include <cmath>
 
 namespace prism {
@@ -156,6 +158,7 @@ SurfacePoint surfaceAt(const Triangle& tri, const ShapeArrays& arrays, const Vec
   s.point = point;
   s.outward = geometricNormal(tri, vertices);
   s.shading = s.outward;
+  s.roundoffScale = roundoffScale(tri, arrays);
   if (!tri.smooth()) return s;
   const Vec3* normals = arrays.meshNormals.data();
   s.shading = interpolatedNormal(tri, vertices, normals, point);

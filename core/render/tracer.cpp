@@ -54,6 +54,14 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
 // toRgb). For every finite radiance this changes nothing.
 Color saturated(const Color& c) { return glm::min(c, Color(std::numeric_limits<double>::max())); }
 
+// A new ray's node in the ray tree, when one is recorded.
+RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
+  if (record == nullptr) return nullptr;
+  RayTreeNode* child = &record->children.emplace_back();
+  child->kind = kind;
+  return child;
+}
+
 } // namespace
 
 Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCache cache)
@@ -96,15 +104,6 @@ void Tracer::setBailout(const BailoutBound& bound) {
 // most w a. A skipped ray brings back at most beyond[depth + 1], so skipping
 // it when beyond[depth + 1] <= a / (ksr + kst) keeps its loss within its
 // share; a traced one keeps its descendants' within it by induction.
-namespace {
-// A new ray's node in the ray tree, when one is recorded.
-RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
-  if (record == nullptr) return nullptr;
-  RayTreeNode* child = &record->children.emplace_back();
-  child->kind = kind;
-  return child;
-}
-} // namespace
 
 // Out of line, so the exact trace keeps its code and pays one test of
 // bailout_ per new ray: the rest of reflection() or transmission() with a
@@ -146,7 +145,6 @@ bool Tracer::blocked(const Ray& ray, double length, const PrimitiveRef* skip, st
 struct Tracer::Incidence {
   Vec3 point;
   bool leaving; // N.D > 0: the ray leaves the solid (or meets a back face)
-  Vec3 g;       // the geometric normal, facing the ray
   Vec3 n;       // the shading normal, facing the ray
   Vec3 nr;      // the normal mirror and refracted rays turn about
   SurfaceFrame frame;
@@ -179,8 +177,8 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   // refracting about it would send the ray through the surface, so those use
   // `g` there. (For every other primitive n is g and this changes nothing.)
   const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
-  const Incidence at{
-      point, leaving, g, n, nr, frame, isFlat(hit.primitive.kind) ? &hit.primitive : nullptr};
+  const Incidence at{point, leaving, n,
+                     nr,    frame,   isFlat(hit.primitive.kind) ? &hit.primitive : nullptr};
 
   const DirectLight direct = directLighting(ray, at, m, depth, counts, record);
   if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid

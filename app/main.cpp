@@ -2,6 +2,7 @@
 #include "bench_command.h"
 #include "convert_command.h"
 #include "render_command.h"
+#include "sweep_command.h"
 #include "view_command.h"
 
 #include "core/io/pending_file.h"
@@ -29,6 +30,9 @@ int main(int argc, char** argv) {
   ConvertCommandOptions convert;
   CLI::App* convertCmd = addConvertCommand(app, convert);
 
+  SweepCommandOptions sweep;
+  CLI::App* sweepCmd = addSweepCommand(app, sweep);
+
   try {
     const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
     app.parse(int(args.size()), args.data());
@@ -47,6 +51,7 @@ int main(int argc, char** argv) {
     if (viewCmd->parsed()) return runViewCommand(view);
     if (benchCmd->parsed()) return runBenchCommand(bench);
     if (convertCmd->parsed()) return runConvertCommand(convert);
+    if (sweepCmd->parsed()) return runSweepCommand(sweep);
   } catch (const std::bad_alloc&) {
     std::cerr << "prism: error: out of memory\n";
     return kExitFailure;

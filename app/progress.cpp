@@ -13,6 +13,15 @@ ProgressReporter::~ProgressReporter() {
 }
 
 void ProgressReporter::update(const RenderProgress& progress) {
+  show([&](double elapsed) {
+    char line[96];
+    std::snprintf(line, sizeof line, "rendering: pass %d, %3.0f%% done, %.1f s", progress.pass,
+                  100.0 * progress.fraction, elapsed);
+    return std::string(line);
+  });
+}
+
+void ProgressReporter::show(const std::function<std::string(double elapsedSeconds)>& text) {
   if (!enabled_) return;
   std::lock_guard lock(mutex_);
   const auto now = Clock::now();
@@ -24,8 +33,8 @@ void ProgressReporter::update(const RenderProgress& progress) {
   lastPrint_ = now;
   printed_ = true;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  std::fprintf(stderr, "%srendering: pass %d, %3.0f%% done, %.1f s%s", terminal_ ? "\r\033[K" : "",
-               progress.pass, 100.0 * progress.fraction, elapsed, terminal_ ? "" : "\n");
+  std::fprintf(stderr, "%s%s%s", terminal_ ? "\r\033[K" : "", text(elapsed).c_str(),
+               terminal_ ? "" : "\n");
   std::fflush(stderr);
 }
 

@@ -5,7 +5,9 @@
 #include "core/render/renderer.h"
 
 #include <chrono>
+#include <functional>
 #include <mutex>
+#include <string>
 
 namespace prism {
 
@@ -15,6 +17,9 @@ public:
   ~ProgressReporter(); // ends the progress line
 
   void update(const RenderProgress& progress); // thread-safe
+  // Any progress text (thread-safe): shown at the same pace and place.
+  // `text` is called only when a line is due.
+  void show(const std::function<std::string(double elapsedSeconds)>& text);
 
 private:
   using Clock = std::chrono::steady_clock;

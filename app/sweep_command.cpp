@@ -1,0 +1,204 @@
+#include "sweep_command.h"
+
+#include "cli_options.h"
+#include "load_scene.h"
+#include "progress.h"
+#include "render_command.h"
+#include "sweep_plots.h"
+
+#include "core/io/image_io.h"
+#include "core/io/pending_file.h"
+#include "core/render/exposure.h"
+#include "core/render/parallel.h"
+#include "core/sweep/reference.h"
+#include "core/sweep/sweep_runner.h"
+#include "core/system/memory_budget.h"
+#include "core/system/system_info.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace prism {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The reference, the film of one setting and its pass 1 kept for the others,
+// and the 8-bit pictures compared: about four renders' worth per pixel.
+constexpr std::uint64_t kSweepBytesPerPixel = 4 * kRenderBytesPerPixel;
+
+std::pair<int, int> sweepSize(const SweepCommandOptions& o, const Scene& scene) {
+  if (!o.size.empty()) return {o.size[0], o.size[1]};
+  if (!o.quick) return {scene.width, scene.height};
+  const double longer = std::max(scene.width, scene.height);
+  auto side = [&](int pixels) {
+    return std::max(1, int(std::lround(pixels * kQuickSweepSide / longer)));
+  };
+  return {side(scene.width), side(scene.height)};
+}
+
+std::string duration(double seconds) {
+  char text[32];
+  if (seconds < 60)
+    std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else
+    std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
+  return text;
+}
+
+std::string progressBar(double fraction) {
+  constexpr int kWidth = 24;
+  const int filled = std::clamp(int(fraction * kWidth + 0.5), 0, kWidth);
+  return "[" + std::string(std::size_t(filled), '#') +
+         std::string(std::size_t(kWidth - filled), '.') + "]";
+}
+
+std::string sweepLine(const SweepProgress& p, double elapsed) {
+  std::string line = "sweep: " + progressBar(p.fraction) + " " + std::to_string(p.done) + "/" +
+                     std::to_string(p.total) + " settings, " + duration(elapsed);
+  if (p.etaSeconds >= 0) line += ", about " + duration(p.etaSeconds) + " to go";
+  if (!p.current.empty()) line += " (" + p.current + ")";
+  return line;
+}
+
+nlohmann::ordered_json summaryJson(const SweepCommandOptions& o, const ReferencePicture& reference,
+                                   const ReferenceSettings& referenceSettings,
+                                   const std::vector<SweepRow>& rows, int threads,
+                                   double cpuSeconds, double wallSeconds) {
+  return {
+      {"scene", fs::path(o.scene).filename().string()},
+      {"machine", machineDescription()},
+      {"threads", threads},
+      {"width", reference.width},
+      {"height", reference.height},
+      {"reference",
+       {{"samples_per_pixel", kReferenceSide * kReferenceSide},
+        {"first_depth", referenceSettings.firstDepth},
+        {"last_depth", referenceSettings.lastDepth},
+        {"converged", reference.converged},
+        {"deepest", reference.deepest},
+        {"avgmax", reference.avgmax},
+        {"rays", reference.counts.total()},
+        {"cpu_s", reference.cpuSeconds},
+        {"wall_s", reference.wallSeconds}}},
+      {"settings", rows.size()},
+      {"cpu_s", cpuSeconds},
+      {"wall_s", wallSeconds},
+  };
+}
+
+void printSummary(const ReferencePicture& reference, const std::vector<SweepRow>& rows,
+                  const std::string& dir) {
+  std::fprintf(stderr, "reference       %d samples per pixel, depth up to %d%s, %.1f s CPU\n",
+               kReferenceSide * kReferenceSide, reference.deepest,
+               reference.converged ? "" : " (a deeper trace still changed some pixel)",
+               reference.cpuSeconds);
+  const SweepSetting defaults;
+  if (const SweepRow* row = findSetting(rows, defaults))
+    std::fprintf(stderr, "default         %s: %.3f s CPU, PSNR %.1f dB, %.2f%% > 2 levels off\n",
+                 settingOptions(defaults).c_str(), row->cpuSeconds, row->error.psnr,
+                 100.0 * row->error.over2);
+  std::fprintf(stderr, "Pareto front    (CPU s, PSNR dB, setting)\n");
+  for (const SweepRow& row : rows)
+    if (row.pareto)
+      std::fprintf(stderr, "  %8.3f  %6.1f  %s\n", row.cpuSeconds, row.error.psnr,
+                   settingOptions(row.setting).c_str());
+  std::fprintf(stderr, "written         %s/{sweep.csv,sweep.json,reference.png,*.png}\n",
+               dir.c_str());
+}
+
+} // namespace
+
+CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& o) {
+  CLI::App* command = app.add_subcommand(
+      "sweep", "Measure speed against accuracy: render a reference and a grid of settings");
+  addSceneArgument(*command, o.scene);
+  command->add_option("-o,--output", o.output, "Folder for sweep.csv, sweep.json and the plots")
+      ->required();
+  command->add_option("--size", o.size, "Image size W H (overrides the scene's resolution)")
+      ->expected(2)
+      ->check(CLI::Range(1, 32768));
+  command->add_flag("--quick", o.quick,
+                    "Small pictures: the scene's at " + std::to_string(kQuickSweepSide) +
+                        " pixels on the longer side");
+  addRangedOption(*command, "--threads", o.threads, "Render threads (0: all cores)", 0, 1024);
+  command->add_flag("-q,--quiet", o.quiet, "No progress and no summary on stderr");
+  return command;
+}
+
+int runSweepCommand(const SweepCommandOptions& o) {
+  const fs::path dir = o.output;
+  const bool writable = succeeds([&] {
+    fs::create_directories(dir);
+    checkWritableFile(dir / "sweep.csv");
+  });
+  if (!writable) return kExitFailure;
+
+  std::optional<Scene> loaded = loadSceneReporting(o.scene);
+  if (!loaded) return kExitUsage;
+  const Scene& scene = *loaded;
+  const auto [width, height] = sweepSize(o, scene);
+  RenderSettings size;
+  size.width = width;
+  size.height = height;
+  if (const std::optional<std::string> problem =
+          imageMemoryProblem(size, kSweepBytesPerPixel, "sweep")) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitFailure;
+  }
+
+  const auto accel = makeAccel(scene, AccelKind::Bvh);
+  const int threads = resolveThreadCount(o.threads);
+  ThreadPoolExecutor executor(threads);
+  const double cpuStart = processCpuSeconds();
+  const auto wallStart = std::chrono::steady_clock::now();
+
+  ReferenceSettings referenceSettings;
+  referenceSettings.width = width;
+  referenceSettings.height = height;
+  ReferencePicture reference;
+  std::vector<SweepRow> rows;
+  {
+    ProgressReporter reporter(!o.quiet);
+    reference = renderReference(scene, *accel, referenceSettings, executor, [&](double f) {
+      reporter.show([&](double elapsed) {
+        return "sweep: reference " + progressBar(f) + " " + duration(elapsed);
+      });
+    });
+    rows = runSweep(scene, *accel, SweepGrid{}, reference, executor, [&](const SweepProgress& p) {
+      reporter.show([&](double elapsed) { return sweepLine(p, elapsed); });
+    });
+  }
+  markParetoFront(rows);
+  const double cpuSeconds = processCpuSeconds() - cpuStart;
+  const double wallSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+
+  std::string warnings;
+  const bool written = succeeds([&] {
+    writeFileAtomically(dir / "sweep.csv", [&](std::ostream& out) { out << formatSweepCsv(rows); });
+    const auto json =
+        summaryJson(o, reference, referenceSettings, rows, threads, cpuSeconds, wallSeconds);
+    writeFileAtomically(dir / "sweep.json",
+                        [&](std::ostream& out) { out << json.dump(2) << "\n"; });
+    writeImage8(dir / "reference.png", width, height,
+                exposeImage(reference.radiance, exposureScale(reference.avgmax)),
+                "Prism sweep reference: " + std::to_string(kReferenceSide * kReferenceSide) +
+                    " samples per pixel, depth up to " + std::to_string(reference.deepest) +
+                    ", exposed by avgmax of the pixel centres");
+    warnings = writeSweepPlots(rows, dir.string(), fs::path(o.scene).stem().string());
+  });
+  if (!written) return kExitFailure;
+  if (!warnings.empty()) std::cerr << "prism: warning: " << warnings << "\n";
+  if (!o.quiet) printSummary(reference, rows, dir.string());
+  return kExitOk;
+}
+
+} // namespace prism

@@ -1,0 +1,52 @@
+// The settings sweep (docs/choosing-settings.md): every setting of a grid
+// rendered, timed and compared with the reference picture, one SweepRow each.
+//
+// Settings that differ only in threshold or jitter share their pass 1 (the
+// pixel centres depend only on depth and bailout): it is traced once per
+// depth and bailout, and each such setting's row counts it in full, cost and
+// rays, as if it had been rendered alone. What is shared is the tracing, not
+// the measurement: each row is what `prism render` with its options costs.
+#pragma once
+
+#include "core/accel/accel.h"
+#include "core/render/executor.h"
+#include "core/sweep/reference.h"
+#include "core/sweep/sweep_table.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+struct SweepGrid {
+  std::vector<double> thresholds{0.0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0};
+  bool noAa = true; // also each depth and bailout without antialiasing
+  std::vector<int> depths{1, 2, 3, 4, 5, 6, 7, 8};
+  std::vector<bool> jitters{false, true};
+  std::vector<double> bailouts{0.0, 0.5, 2.0};
+
+  // Every setting, in the order the sweep runs them: by depth, then bailout;
+  // --no-aa first, then by jitter and threshold.
+  std::vector<SweepSetting> settings() const;
+};
+
+struct SweepProgress {
+  int done = 0;           // settings measured
+  int total = 0;          // settings in the grid
+  double fraction = 0.0;  // of the estimated work, 0..1
+  double etaSeconds = -1; // wall seconds still to go; negative until estimated
+  std::string current;    // the options of the setting being rendered
+};
+
+using SweepProgressCallback = std::function<void(const SweepProgress&)>;
+
+// Renders every setting of `grid` at the reference's size on `executor`,
+// one after the other (each on all of the executor's workers), and compares
+// each picture with `reference`. Rows in SweepGrid::settings() order, the
+// Pareto front not yet marked.
+std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const SweepGrid& grid,
+                               const ReferencePicture& reference, Executor& executor,
+                               const SweepProgressCallback& progress = {});
+
+} // namespace prism

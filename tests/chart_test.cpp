@@ -1,7 +1,8 @@
 // The chart writer behind `prism sweep`'s plots (app/chart.h): its ticks,
 // ranges and pixel mapping computed by hand, and pictures it writes read
-// back to find what should be where.
+// back to find what should be where; and the sweep's three charts.
 #include "app/chart.h"
+#include "app/sweep_plots.h"
 
 #include "test_files.h"
 
@@ -206,6 +207,61 @@ TEST(ChartPicture, ASkippedPointBreaksTheLine) {
 TEST(ChartPicture, AnUnwritablePathThrows) {
   EXPECT_THROW(writeChartPng(onePoint("DejaVuSans"), "/nonexistent-prism-dir/chart.png"),
                std::runtime_error);
+}
+
+// ---- The sweep's charts ----
+
+SweepRow row(SweepSetting setting, double cpuSeconds, double psnr, bool pareto = false) {
+  SweepRow r;
+  r.setting = setting;
+  r.cpuSeconds = cpuSeconds;
+  r.wallSeconds = cpuSeconds / 2;
+  r.error.psnr = psnr;
+  r.pareto = pareto;
+  return r;
+}
+
+TEST(SweepPlots, WritesThreeChartsOfTheStatedSize) {
+  const std::vector<SweepRow> rows = {
+      row({}, 2.0, 38.0, true), // the default
+      row({.antialias = false}, 0.5, 30.0, true),
+      row({.antialias = false, .depth = 3}, 0.4, 26.0),
+      row({.depth = 3}, 1.5, 33.0),
+      row({.depth = 8}, 3.0, 39.0, true),
+      row({.depth = 5, .bailout = 0.5}, 1.8, 37.5),
+      row({.thresh = 0.0, .depth = 5}, 6.0, kInf, true), // the reference's own setting
+      row({.thresh = 0.02, .depth = 5, .jitter = true}, 4.0, 40.0),
+      row({.thresh = 0.3}, 1.0, 20.0), // no threshold category: only on time-vs-error
+  };
+  ScratchDir dir;
+  EXPECT_EQ(writeSweepPlots(rows, dir.path().string(), "test.sc"), "");
+  for (const char* name : {"time-vs-error.png", "error-vs-depth.png", "error-vs-threshold.png"}) {
+    const auto path = dir / name;
+    ASSERT_TRUE(std::filesystem::exists(path)) << name;
+    EXPECT_GT(std::filesystem::file_size(path), 1000u) << name;
+    OIIO::ImageBuf image(path.string());
+    ASSERT_TRUE(image.read()) << name << ": " << image.geterror();
+    EXPECT_EQ(image.spec().width, 900) << name;
+    EXPECT_EQ(image.spec().height, 600) << name;
+  }
+
+  // The Pareto front is a red line, the default a large blue disc (and its
+  // legend entry another).
+  OIIO::ImageBuf timeVsError((dir / "time-vs-error.png").string());
+  ASSERT_TRUE(timeVsError.read());
+  int red = 0, blue = 0;
+  for (int y = 0; y < 600; ++y)
+    for (int x = 0; x < 900; ++x) {
+      const auto c = pixelAt(timeVsError, x, y);
+      red += reddish(c);
+      blue += c[2] > 0.7f && c[0] < 0.3f;
+    }
+  EXPECT_GT(red, 300);
+  EXPECT_GT(blue, 150);
+}
+
+TEST(SweepPlots, AnUnwritableFolderThrows) {
+  EXPECT_THROW(writeSweepPlots({}, "/nonexistent-prism-dir", "test.sc"), std::runtime_error);
 }
 
 } // namespace

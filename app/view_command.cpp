@@ -50,6 +50,7 @@ PreparedView prepareView(const ViewCommandOptions& o, LoadProgress& progress) {
     v.sizeFromScene = o.render.size.empty();
     v.settings = renderSettings(o.render, scene);
     v.accel = o.render.accel;
+    v.sweepPath = o.sweep;
     if (const std::optional<std::string> problem =
             imageMemoryProblem(v.settings, kPreviewBytesPerPixel, "preview")) {
       std::cerr << "prism: error: " << *problem << "\n";
@@ -83,6 +84,10 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommandOptions& o) {
   view->add_flag("-q,--quiet", r.quiet, "Headless fallback: no progress and no statistics");
   view->add_option("--script", o.script,
                    "Run a scripted session from FILE (waits, edits, save, screenshot, quit)")
+      ->check(CLI::ExistingFile);
+  view->add_option("--sweep", o.sweep,
+                   "The scene's sweep table (`prism sweep`'s CSV), to show where the settings "
+                   "sit [NAME.sweep.csv beside the scene NAME.sc]")
       ->check(CLI::ExistingFile);
   view->add_option("--dump-widgets", o.dumpWidgets,
                    "Write every frame's interactive widgets (label, kind, place) as JSON to FILE, "

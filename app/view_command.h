@@ -15,6 +15,7 @@ struct ViewCommandOptions {
   RenderCommandOptions render; // scene, -o (the Save field; the fallback's output), settings
   std::string script;          // a scripted session (see viewer/view_script.h)
   std::string dumpWidgets;     // --dump-widgets: the window's widgets, every frame (tests)
+  std::string sweep;           // --sweep: the scene's sweep table [SCENE-STEM.sweep.csv beside it]
 };
 
 // Registers the `view` subcommand and its options on `app`.

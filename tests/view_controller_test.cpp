@@ -171,6 +171,90 @@ TEST(ViewController, OpensAnotherSceneAFreshStart) {
   EXPECT_EQ(c.scene().lights.size(), 1u);
 }
 
+// A sweep table of main.sc's settings as optionsFor() sets them (depth 3,
+// threshold 0.1) and of one cheaper and better setting.
+std::string sweepCsv(double currentPsnr) {
+  SweepRow current, better;
+  current.setting = {.antialias = true, .thresh = 0.1, .depth = 3};
+  current.cpuSeconds = 2.0;
+  current.error.psnr = currentPsnr;
+  better.setting = {.antialias = true, .thresh = 0.2, .depth = 2};
+  better.cpuSeconds = 1.0;
+  better.error.psnr = 40.0;
+  return formatSweepCsv({current, better});
+}
+
+TEST(ViewController, ReadsTheSweepBesideTheSceneWithEveryLoad) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  writeFile(dir / "main.sweep.csv", sweepCsv(30.0));
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+  EXPECT_EQ(c.sweep().path, (dir / "main.sweep.csv").string());
+  ASSERT_EQ(c.sweep().rows.size(), 2u);
+  SweepStatus status = c.sweepStatus();
+  ASSERT_TRUE(status.visible && status.current && status.best);
+  EXPECT_EQ(status.current->error.psnr, 30.0);
+  EXPECT_EQ(status.best->setting.depth, 2);
+
+  // The status follows the settings ...
+  RenderSettings deeper = c.settings();
+  deeper.maxDepth = 4;
+  c.apply(SettingsEdit{deeper});
+  status = c.sweepStatus();
+  EXPECT_FALSE(status.current);
+  EXPECT_EQ(status.lines.back(), "not in the sweep");
+  c.undo();
+  // ... and the table is read again with the scene.
+  writeFile(dir / "main.sweep.csv", sweepCsv(45.0));
+  c.reload();
+  updateUntil(c, [&] { return c.successfulReloads() == 1; });
+  status = c.sweepStatus();
+  ASSERT_TRUE(status.current);
+  EXPECT_EQ(status.current->error.psnr, 45.0);
+  EXPECT_TRUE(status.currentOnFront);
+
+  // A malformed table says where; the scene is shown all the same.
+  writeFile(dir / "main.sweep.csv", sweepCsv(45.0) + "1,2\n");
+  c.reload();
+  updateUntil(c, [&] { return c.successfulReloads() == 2; });
+  EXPECT_TRUE(c.sceneErrors().empty());
+  EXPECT_EQ(c.sweep().error,
+            (dir / "main.sweep.csv").string() + ":4:4: expected 22 fields as in the header, got 2");
+  EXPECT_TRUE(c.sweepStatus().visible);
+
+  // Gone: no sweep, silently.
+  fs::remove(dir / "main.sweep.csv");
+  c.reload();
+  updateUntil(c, [&] { return c.successfulReloads() == 3; });
+  EXPECT_FALSE(c.sweep().present());
+  EXPECT_FALSE(c.sweepStatus().visible);
+}
+
+TEST(ViewController, ASweepNamedOnTheCommandLineIsThisScenesOnly) {
+  ScratchDir dir;
+  const Scene scene = writeMainScene(dir);
+  writeFile(dir / "elsewhere" / "measured.csv", sweepCsv(33.0));
+  writeFile(dir / "main.sweep.csv", sweepCsv(30.0)); // not the one named
+  ViewOptions options = optionsFor(scene, dir / "main.sc");
+  options.sweepPath = (dir / "elsewhere" / "measured.csv").string();
+  ViewController c(scene, options);
+  ASSERT_TRUE(c.sweepStatus().current);
+  EXPECT_EQ(c.sweepStatus().current->error.psnr, 33.0);
+  c.reload();
+  updateUntil(c, [&] { return c.successfulReloads() == 1; });
+  EXPECT_EQ(c.sweep().path, options.sweepPath);
+
+  // Another scene: the table beside it (here none).
+  writeFile(dir / "other.sc", "eye 0 0 9\nlight 1 1 1 5 5 5\nsphere 0 0 0 1\n");
+  c.open((dir / "other.sc").string());
+  updateUntil(c, [&] { return c.successfulReloads() == 2; });
+  EXPECT_FALSE(c.sweep().present());
+  writeFile(dir / "other.sweep.csv", sweepCsv(20.0));
+  c.reload();
+  updateUntil(c, [&] { return c.successfulReloads() == 3; });
+  EXPECT_EQ(c.sweep().path, (dir / "other.sweep.csv").string());
+}
+
 TEST(ViewController, ShowsWhatLoadingTheSceneWarnedAbout) {
   ScratchDir dir;
   writeFile(dir / "main.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"

@@ -159,6 +159,60 @@ TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {
   EXPECT_FALSE(sameRgb(*plain, *antialiased)) << "the scene has nothing to antialias";
 }
 
+// The sweep table beside the scene (`prism sweep`'s CSV, here written by hand):
+// the panel's Sweep section places the current settings in it, and `print
+// sweep` prints what the section shows. Depth 5, threshold 0.1 (the defaults)
+// cost 2.5 s for 38.5 dB where depth 3 gives 41.25 dB for 1.25 s.
+TEST(ViewE2E, TheSweepSectionPlacesTheCurrentSettings) {
+  ScratchDir dir;
+  writeFile(dir / "a.sc", scene("3 4 4"));
+  const std::string header =
+      "antialias,thresh,depth,jitter,bailout,options,cpu_s,wall_s,eye_rpp,shadow_rpp,"
+      "reflected_rpp,transmitted_rpp,pilot_rpp,total_rpp,supersampled,rmse,psnr_db,"
+      "worst_levels,worst_x,worst_y,over2,pareto\r\n";
+  writeFile(dir / "a.sweep.csv",
+            header +
+                "1,0.1,5,0,0,--depth 5 --thresh 0.1,2.5,1.3,1.2,2,0.5,0,0,3.7,0.1,0.001,38.5,12,"
+                "80,60,0.004,0\r\n"
+                "1,0.1,3,0,0,--depth 3 --thresh 0.1,1.25,0.7,1.2,2,0.3,0,0,3.5,0.1,0.001,41.25,6,"
+                "10,20,0.001,1\r\n");
+  writeFile(dir / "s.txt", "wait coarse\nprint sweep\ndepth 3\nprint sweep\ndepth 4\n"
+                           "print sweep\nwait coarse\nquit\n");
+  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const std::string defaults = "sweep: a.sweep.csv: 2 settings measured\n"
+                               "sweep: these settings: --depth 5 --thresh 0.1\n"
+                               "sweep: expected PSNR 38.50 dB\n"
+                               "sweep: pixels more than 2 levels off: 0.40%\n"
+                               "sweep: worst pixel: 12 levels off, at (80, 60)\n"
+                               "sweep: CPU time in the sweep: 2.5 s\n"
+                               "sweep: Pareto-optimal at the same cost: --depth 3 --thresh 0.1, "
+                               "41.25 dB, 1.25 s\n";
+  const std::string depth3 = "sweep: a.sweep.csv: 2 settings measured\n"
+                             "sweep: these settings: --depth 3 --thresh 0.1\n"
+                             "sweep: expected PSNR 41.25 dB\n"
+                             "sweep: pixels more than 2 levels off: 0.10%\n"
+                             "sweep: worst pixel: 6 levels off, at (10, 20)\n"
+                             "sweep: CPU time in the sweep: 1.25 s\n"
+                             "sweep: on the Pareto front: no setting of the sweep is as cheap and "
+                             "more accurate\n";
+  const std::string depth4 = "sweep: a.sweep.csv: 2 settings measured\n"
+                             "sweep: these settings: --depth 4 --thresh 0.1\n"
+                             "sweep: not in the sweep\n";
+  EXPECT_EQ(r.out.substr(0, r.out.find("frames while rendering")), defaults + depth3 + depth4);
+
+  // Named with --sweep, and malformed: the panel says where, the window runs on.
+  writeFile(dir / "bad.csv", header + "1,0.1,5,0,0,x,fast\n");
+  writeFile(dir / "p.txt", "wait coarse\nprint sweep\nquit\n");
+  const RunResult bad = runInXvfb(dir.path(), kPrism + " view a.sc --sweep bad.csv --script p.txt");
+  ASSERT_EQ(bad.exitCode, 0) << bad.out << bad.err;
+  const std::string where = "bad.csv:2:19: expected 22 fields as in the header, got 7";
+  EXPECT_NE(bad.out.find("sweep: The sweep table cannot be read:\nsweep: " + where + "\n"),
+            std::string::npos)
+      << bad.out;
+  EXPECT_NE(bad.err.find(where), std::string::npos) << bad.err;
+}
+
 // Reads the app's stdout line by line while it runs, so the test can edit the
 // scene exactly when the script says it is ready.
 class Session {

@@ -115,6 +115,18 @@ TEST(ViewScript, ParsesTheInspectionAndComparisonActions) {
             "s.txt:5:9: error: compare: expected off, flip or split, got 'sideways'");
 }
 
+TEST(ViewScript, ParsesPrintSweep) {
+  const auto a = parseScript("print sweep\n", "s.txt");
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].op, ScriptOp::Print);
+  EXPECT_EQ(a[0].path, "sweep");
+  const auto errors = errorsOf("print\nprint lights\nprint sweep now\n");
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[0].format(), "s.txt:1:1: error: print: expected sweep, got 0 arguments");
+  EXPECT_EQ(errors[1].format(), "s.txt:2:7: error: print: expected sweep, got 'lights'");
+  EXPECT_EQ(errors[2].format(), "s.txt:3:13: error: print: expected sweep, got 2 arguments");
+}
+
 TEST(ViewScript, ReportsEveryBadLineWithItsPosition) {
   const auto errors = errorsOf("wait pass1\n"
                                "  jump 3\n"

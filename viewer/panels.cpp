@@ -339,6 +339,22 @@ void statisticsSection(ViewController& c, WindowState& state, const FrameStats& 
                      withSeparators((long long)p.restarts).c_str(), frames.recentFps());
 }
 
+// Where the current settings sit in the scene's sweep table (viewer/sweep_view.h):
+// their expected error and the most accurate setting that costs no more.
+void sweepSection(const SweepStatus& sweep) {
+  if (!sweep.error.empty()) {
+    for (const std::string& line : sweep.lines)
+      errorText(line);
+    return;
+  }
+  for (std::size_t i = 0; i < sweep.lines.size(); ++i) {
+    if (i == 0)
+      dimText(sweep.lines[i]); // the file
+    else
+      ImGui::TextWrapped("%s", sweep.lines[i].c_str());
+  }
+}
+
 // Every key and mouse action of the window, for the F1 overlay.
 struct KeyHelp {
   const char* keys;
@@ -415,6 +431,8 @@ void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& f
   section("Pixel", [&] { pixelSection(state); });
   section("Save", [&] { saveSection(c, state); });
   section("Statistics", [&] { statisticsSection(c, state, frames); });
+  if (const SweepStatus sweep = c.sweepStatus(); sweep.visible)
+    section("Sweep", [&] { sweepSection(sweep); });
   ImGui::PopItemWidth();
   ImGui::PopAllowKeyboardFocus();
   if (state.panelGesture && !ImGui::IsAnyItemActive()) { // the widget was let go

@@ -494,6 +494,14 @@ void ViewApp::start(const ScriptAction& a) {
     screenshotTaken_ = false;
     break;
   case ScriptOp::Echo: std::cout << a.path << std::endl; break;
+  case ScriptOp::Print: { // the panel's Sweep section, as text
+    const SweepStatus sweep = controller_->sweepStatus();
+    if (!sweep.visible) std::cout << "sweep: none\n";
+    for (const std::string& line : sweep.lines)
+      std::cout << "sweep: " << line << "\n";
+    std::cout << std::flush;
+    break;
+  }
   case ScriptOp::Quit: quit_ = true; break;
   }
 }

@@ -23,7 +23,11 @@ constexpr auto kPollInterval = std::chrono::milliseconds(500);
 
 ViewController::ViewController(Scene scene, const ViewOptions& options,
                                std::vector<std::string> warnings)
-    : options_(options), file_(FileValues::of(scene)), sceneWarnings_(std::move(warnings)) {
+    : options_(options), file_(FileValues::of(scene)), sceneWarnings_(std::move(warnings)),
+      namedSweepScene_(options.scenePath) {
+  const auto [sweepPath, named] = sweepPathFor(options_.scenePath);
+  sweep_ = loadSweep(sweepPath, named);
+  if (!sweep_.error.empty()) std::cerr << sweep_.error << "\n";
   for (const std::string& line : sceneWarnings_)
     std::cerr << line << "\n"; // also for whoever runs it from a terminal
   watch_.watch(scene.files);
@@ -103,8 +107,15 @@ void ViewController::endGesture() {
   gestureStep_ = false;
 }
 
-ViewController::LoadedScene ViewController::load(const std::string& path, AccelKind accel) {
+std::pair<std::string, bool> ViewController::sweepPathFor(const std::string& path) const {
+  if (!options_.sweepPath.empty() && path == namedSweepScene_) return {options_.sweepPath, true};
+  return {sweepPathBeside(path), false};
+}
+
+ViewController::LoadedScene ViewController::load(const std::string& path, AccelKind accel,
+                                                 const std::string& sweepPath, bool sweepNamed) {
   LoadedScene loaded;
+  loaded.sweep = loadSweep(sweepPath, sweepNamed); // never throws
   try {
     std::vector<Diagnostic> warnings;
     loaded.scene = std::make_unique<Scene>(loadAnyScene(path, &warnings));
@@ -141,7 +152,9 @@ void ViewController::open(const std::string& path) {
 }
 
 void ViewController::startLoading(const std::string& path) {
-  loading_ = std::async(std::launch::async, &ViewController::load, path, session_->accelKind());
+  const auto [sweepPath, named] = sweepPathFor(path);
+  loading_ = std::async(std::launch::async, &ViewController::load, path, session_->accelKind(),
+                        sweepPath, named);
 }
 
 // The user's edits follow the scene into every state of the history: those of
@@ -188,6 +201,8 @@ void ViewController::install(LoadedScene loaded) {
     keptEdits_ = {};
   }
   sceneWarnings_ = std::move(loaded.warnings);
+  if (!loaded.sweep.error.empty()) std::cerr << loaded.sweep.error << "\n";
+  sweep_ = std::move(loaded.sweep);
   Scene& scene = *loaded.scene;
   watch_.watch(scene.files); // an edit may have added or dropped an include
   file_ = FileValues::of(scene);

@@ -9,6 +9,7 @@
 #include "file_watch.h"
 #include "save_job.h"
 #include "scene_edit.h"
+#include "sweep_view.h"
 
 #include "core/render/render_session.h"
 
@@ -17,6 +18,7 @@
 #include <future>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace prism {
@@ -31,6 +33,9 @@ struct ViewOptions {
   // file's camera from the start: reloads keep it, Reset camera goes to the
   // file's camera.
   std::optional<CameraSpec> camera;
+  // --sweep: the sweep table of the scene (`prism sweep`); "" for the one
+  // beside it, NAME.sweep.csv. Another scene opened uses the one beside it.
+  std::string sweepPath;
 };
 
 class ViewController {
@@ -148,6 +153,12 @@ public:
   // What loading the current scene warned about (ignored OBJ/MTL fields, NFF
   // features without an equivalent).
   const std::vector<std::string>& sceneWarnings() const { return sceneWarnings_; }
+  // The sweep table of the scene shown (viewer/sweep_view.h), read with the
+  // scene on every load, reload and open: none when there is no file beside
+  // the scene, or why it could not be read. sweepStatus() places the current
+  // settings in it.
+  const LoadedSweep& sweep() const { return sweep_; }
+  SweepStatus sweepStatus() const { return prism::sweepStatus(sweep_, settings()); }
   int successfulReloads() const { return successfulReloads_; }
   int failedReloads() const { return failedReloads_; }
   const SaveJob& saveJob() const { return save_; }
@@ -158,6 +169,7 @@ private:
     std::unique_ptr<Scene> scene; // null when the files have errors
     std::unique_ptr<Accel> accel;
     std::vector<std::string> errors, warnings;
+    LoadedSweep sweep;
   };
   struct SceneSave {
     SceneSaveState state = SceneSaveState::Idle;
@@ -166,7 +178,10 @@ private:
     std::future<std::string> writing; // the error message, empty on success
   };
 
-  static LoadedScene load(const std::string& path, AccelKind accel);
+  static LoadedScene load(const std::string& path, AccelKind accel, const std::string& sweepPath,
+                          bool sweepNamed);
+  // The sweep table of the scene at `path`, and whether the user named it.
+  std::pair<std::string, bool> sweepPathFor(const std::string& path) const;
   void startLoading(const std::string& path);
   void install(LoadedScene loaded);
   UserEdits& current() { return states_[at_]; }
@@ -191,6 +206,8 @@ private:
   Clock::time_point nextPoll_{};
   std::vector<std::string> sceneErrors_;
   std::vector<std::string> sceneWarnings_;
+  std::string namedSweepScene_; // the scene --sweep was given for
+  LoadedSweep sweep_;
   std::future<LoadedScene> loading_; // valid while a reload runs
   bool reloadAgain_ = false;
   std::optional<std::string> opening_;  // the scene being opened in place of this one

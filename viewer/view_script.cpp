@@ -131,6 +131,7 @@ const std::map<std::string, ScriptOp>& keywords() {
       {"save", ScriptOp::Save},
       {"screenshot", ScriptOp::Screenshot},
       {"echo", ScriptOp::Echo},
+      {"print", ScriptOp::Print},
       {"quit", ScriptOp::Quit},
   };
   return table;
@@ -222,6 +223,11 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     a.path = restOfLine(line, t[0]);
     return;
   case ScriptOp::Echo: a.path = restOfLine(line, t[0]); return;
+  case ScriptOp::Print:
+    if (!p.arity(t, 1, "sweep")) return;
+    if (t[1].text != "sweep") p.error(t[1], "print: expected sweep, got '" + t[1].text + "'");
+    a.path = t[1].text;
+    return;
   case ScriptOp::Exposure:
     if (!p.arity(t, 1, "auto or lock")) return;
     if (t[1].text != "auto" && t[1].text != "lock")

@@ -23,6 +23,8 @@
 //   save PATH                the final picture, as the Save button (waits for it)
 //   screenshot PATH          the window's own pixels after the next frame is drawn
 //   echo TEXT                print TEXT on stdout (a test can wait for it)
+//   print sweep              print the Sweep section's text on stdout, each line
+//                            as "sweep: LINE" ("sweep: none" without a sweep)
 //   quit
 //
 // The parser is pure; running goes through a ScriptHost so it can be tested
@@ -64,6 +66,7 @@ enum class ScriptOp {
   Save,
   Screenshot,
   Echo,
+  Print,
   Quit,
 };
 
@@ -77,7 +80,7 @@ struct ScriptAction {
   WaitFor waitFor = WaitFor::Done;
   int index = 0;              // light number (from 1), frame count, depth
   std::vector<double> values; // numbers in order; on/off as 1/0
-  std::string path;           // save, screenshot; echo's text
+  std::string path;           // save, screenshot; echo's text; what print prints
 };
 
 // Parses a script; throws SceneError (FILE:LINE:COLUMN diagnostics, like a scene)

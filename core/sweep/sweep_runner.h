@@ -6,6 +6,7 @@
 // depth and bailout, and each such setting's row counts it in full, cost and
 // rays, as if it had been rendered alone. What is shared is the tracing, not
 // the measurement: each row is what `prism render` with its options costs.
+// Runs shorter than 50 ms of CPU are repeated and their mean taken.
 #pragma once
 
 #include "core/accel/accel.h"

@@ -134,15 +134,16 @@ CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& o) {
 }
 
 int runSweepCommand(const SweepCommandOptions& o) {
+  std::optional<Scene> loaded = loadSceneReporting(o.scene);
+  if (!loaded) return kExitUsage;
+  // The folder before any rendering, so that a typo in its name costs no
+  // sweep; after the scene, so that a scene error leaves no empty folder.
   const fs::path dir = o.output;
   const bool writable = succeeds([&] {
     fs::create_directories(dir);
     checkWritableFile(dir / "sweep.csv");
   });
   if (!writable) return kExitFailure;
-
-  std::optional<Scene> loaded = loadSceneReporting(o.scene);
-  if (!loaded) return kExitUsage;
   const Scene& scene = *loaded;
   const auto [width, height] = sweepSize(o, scene);
   RenderSettings size;

@@ -105,11 +105,15 @@ void printSummary(const ReferencePicture& reference, const std::vector<SweepRow>
     std::fprintf(stderr, "default         %s: %.3f s CPU, PSNR %.1f dB, %.2f%% > 2 levels off\n",
                  settingOptions(defaults).c_str(), row->cpuSeconds, row->error.psnr,
                  100.0 * row->error.over2);
-  std::fprintf(stderr, "Pareto front    (CPU s, PSNR dB, setting)\n");
+  std::vector<const SweepRow*> front;
   for (const SweepRow& row : rows)
-    if (row.pareto)
-      std::fprintf(stderr, "  %8.3f  %6.1f  %s\n", row.cpuSeconds, row.error.psnr,
-                   settingOptions(row.setting).c_str());
+    if (row.pareto) front.push_back(&row);
+  std::sort(front.begin(), front.end(),
+            [](const SweepRow* a, const SweepRow* b) { return a->cpuSeconds < b->cpuSeconds; });
+  std::fprintf(stderr, "Pareto front    (CPU s, PSNR dB, setting; cheapest first)\n");
+  for (const SweepRow* row : front)
+    std::fprintf(stderr, "  %8.3f  %6.1f  %s\n", row->cpuSeconds, row->error.psnr,
+                 settingOptions(row->setting).c_str());
   std::fprintf(stderr, "written         %s/{sweep.csv,sweep.json,reference.png,*.png}\n",
                dir.c_str());
 }

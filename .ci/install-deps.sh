@@ -7,6 +7,7 @@ packages=(
   g++ cmake make pkg-config       # toolchain
   libglm-dev                        # vector math
   libopenimageio-dev openimageio-tools  # image files (and oiiotool for comparisons)
+  fonts-dejavu-core                 # the text of `prism sweep`'s plots (OpenImageIO draws it)
   libcli11-dev                      # command-line parsing
   nlohmann-json3-dev                # statistics as JSON
   libtinyobjloader-dev              # OBJ/MTL import

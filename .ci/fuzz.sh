@@ -6,14 +6,14 @@
 # reproducer (hex dump and base64) with libFuzzer's report. See docs/fuzzing.md.
 #
 # Usage: .ci/fuzz.sh [SECONDS_PER_TARGET]   (default: $PRISM_FUZZ_SECONDS, else 60)
-#   PRISM_FUZZ_TARGETS="sc obj"  run only these targets (sc nff obj roundtrip)
+#   PRISM_FUZZ_TARGETS="sc obj"  run only these targets (sc nff obj roundtrip sweep_csv)
 #   PRISM_FUZZ_BUILD_DIR=DIR     build elsewhere than build-fuzz
 # Needs the Debian packages clang-14 and libclang-rt-14-dev (libFuzzer's runtime).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-${PRISM_FUZZ_SECONDS:-60}}
 build=${PRISM_FUZZ_BUILD_DIR:-"$root/build-fuzz"}
-read -r -a targets <<<"${PRISM_FUZZ_TARGETS:-sc nff obj roundtrip}"
+read -r -a targets <<<"${PRISM_FUZZ_TARGETS:-sc nff obj roundtrip sweep_csv}"
 if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
   echo "fuzz.sh: SECONDS_PER_TARGET must be a positive integer, found '$seconds'" >&2
   exit 2

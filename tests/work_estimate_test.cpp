@@ -152,7 +152,7 @@ TEST(WorkEstimate, TheWarningSaysHowFastAndWhatBoundsIt) {
   e.explodes = true;
   RenderSettings s = settingsFor(64, 200);
   EXPECT_EQ(workWarning(e, s),
-            "depth 200: the ray tree grows 1.9x per level from depth 12; pass 1 alone may need "
+            "depth 200: the ray tree grows 1.93x per level from depth 12; pass 1 alone may need "
             "about 3e58 rays per pixel (4e52 years on 2 threads); --bailout 0.5 or a lower "
             "--depth bounds it");
   s.bailout = 0.5; // the bailout is on: only the depth is left to suggest

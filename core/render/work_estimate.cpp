@@ -233,7 +233,7 @@ std::string roughDuration(double seconds) {
 
 std::string workWarning(const WorkEstimate& estimate, const RenderSettings& settings) {
   char growth[32];
-  std::snprintf(growth, sizeof growth, "%.2g", estimate.growth);
+  std::snprintf(growth, sizeof growth, "%.3g", estimate.growth);
   const int threads = resolveThreadCount(settings.threads);
   std::string text = "depth " + std::to_string(settings.maxDepth) + ": ";
   if (estimate.growth > 1.0)

@@ -16,6 +16,7 @@
 #include "core/render/pixel_tree.h"
 #include "core/render/stats.h"
 #include "core/render/tracer.h"
+#include "core/render/work_estimate.h"
 #include "core/system/memory_budget.h"
 #include "core/system/system_info.h"
 
@@ -217,6 +218,14 @@ int runRenderCommand(const RenderCommandOptions& o) {
   if (!o.pixel.empty()) {
     std::cout << pixelRayTreeText(scene, *accel, settings, o.pixel[0], o.pixel[1]);
     return kExitOk;
+  }
+
+  // Before the render, which it does not change: a warning when pass 1 looks
+  // endless (a deep render only; nothing is traced for depth <= 8, or with -q).
+  if (!o.quiet) {
+    const WorkEstimate estimate = estimateWork(scene, *accel, settings);
+    if (estimate.explodes)
+      std::cerr << "prism: warning: " << workWarning(estimate, settings) << "\n";
   }
 
   RenderStats stats;

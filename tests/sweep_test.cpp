@@ -1,8 +1,10 @@
 // `prism sweep` (docs/choosing-settings.md): the image error measures, the
-// reference picture and the sweep of settings. Expected values
+// reference picture, the sweep of settings and the command. Expected values
 // are worked out by hand or taken from an independent path (plain render()
 // calls), never from the code under test.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "core/accel/accel.h"
 #include "core/io/scene_parser.h"
@@ -16,6 +18,7 @@
 #include "core/sweep/sweep_table.h"
 
 #include "render_fixtures.h"
+#include "test_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -511,6 +514,112 @@ TEST(RunSweep, EveryRowIsWhatAPlainRenderOfItsSettingGives) {
   EXPECT_EQ(progress.back().done, int(rows.size()));
   EXPECT_EQ(progress.back().total, int(rows.size()));
   EXPECT_DOUBLE_EQ(progress.back().fraction, 1.0);
+}
+
+// ------------------------------------------------------------------ the command
+
+class SweepCli : public ::testing::Test {
+protected:
+  test::RunResult prism(const std::string& args) {
+    return test::runCaptured(test::quoted(PRISM_BINARY) + " " + args, dir_);
+  }
+  fs::path write(const std::string& name, const std::string& text) {
+    test::writeFile(dir_ / name, text);
+    return dir_ / name;
+  }
+
+  test::ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
+};
+
+const char* kSmallScene = R"(eye 0 0 4
+lookat 0 0 0
+light 2 3 4 30 30 30
+ambient 0.1 0.1 0.1
+surface 1 0.5 0.2 0.6 0.4 0 20 1
+sphere 0 0 0 1
+surface 0.4 0.6 0.9 0.8 0 0 1 1
+polygon 4  -5 -1 -5  5 -1 -5  5 -1 5  -5 -1 5
+)";
+
+TEST_F(SweepCli, WritesTheTableTheSummaryTheReferenceAndThePlots) {
+  const fs::path scene = write("small.sc", kSmallScene);
+  const fs::path out = dir_ / "results";
+  const test::RunResult run =
+      prism("sweep " + test::quoted(scene) + " -o " + test::quoted(out) + " --size 16 12 -q");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(run.err, ""); // -q: no progress, no summary
+
+  const std::vector<SweepRow> rows = parseSweepCsv(test::slurp(out / "sweep.csv"));
+  ASSERT_EQ(rows.size(), 408u);
+  const std::vector<SweepSetting> grid = SweepGrid{}.settings();
+  // In the grid's order (compared by their options: a --no-aa row read back
+  // has no threshold, and the grid's has 0).
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_EQ(settingOptions(rows[i].setting), settingOptions(grid[i])) << i;
+  EXPECT_GT(std::count_if(rows.begin(), rows.end(), [](const SweepRow& r) { return r.pareto; }), 0);
+  ASSERT_NE(findSetting(rows, SweepSetting{}), nullptr);
+  for (const SweepRow& row : rows) {
+    EXPECT_GT(row.cpuSeconds, 0.0);
+    EXPECT_TRUE(std::isfinite(row.cpuSeconds));
+  }
+
+  const auto json = nlohmann::json::parse(test::slurp(out / "sweep.json"));
+  EXPECT_EQ(json.at("scene"), "small.sc");
+  EXPECT_EQ(json.at("width"), 16);
+  EXPECT_EQ(json.at("height"), 12);
+  EXPECT_EQ(json.at("settings"), 408);
+  EXPECT_GE(json.at("threads").get<int>(), 1);
+  const auto& reference = json.at("reference");
+  EXPECT_EQ(reference.at("samples_per_pixel"), 64);
+  EXPECT_EQ(reference.at("first_depth"), 8);
+  EXPECT_EQ(reference.at("last_depth"), 32);
+  EXPECT_TRUE(reference.at("converged").get<bool>());
+  EXPECT_GE(reference.at("deepest").get<int>(), 10);
+  EXPECT_GT(reference.at("avgmax").get<double>(), 0.0);
+  // At least 64 eye rays per pixel and a centre per pixel at depths 8 and 10.
+  EXPECT_GE(reference.at("rays").get<long long>(), 16 * 12 * 66);
+
+  auto in = OIIO::ImageInput::open((out / "reference.png").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 16);
+  EXPECT_EQ(in->spec().height, 12);
+  EXPECT_EQ(in->spec().nchannels, 3);
+  std::vector<unsigned char> pixels(16 * 12 * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+  // Exposed by avgmax: not black, and the sphere is brighter than the floor.
+  EXPECT_GT(*std::max_element(pixels.begin(), pixels.end()), 100);
+  in->close();
+
+  for (const char* plot : {"time-vs-error.png", "error-vs-depth.png", "error-vs-threshold.png"}) {
+    auto chart = OIIO::ImageInput::open((out / plot).string());
+    ASSERT_TRUE(chart) << plot;
+    EXPECT_GT(chart->spec().width, 100) << plot;
+    EXPECT_GT(chart->spec().height, 100) << plot;
+  }
+}
+
+TEST_F(SweepCli, SceneErrorExitsWith2AndWritesNoTable) {
+  const fs::path bad = write("bad.sc", "eye 0 0 4\nsphere 0 0 0 -1\n");
+  const fs::path out = dir_ / "results";
+  const test::RunResult run =
+      prism("sweep " + test::quoted(bad) + " -o " + test::quoted(out) + " --size 8 6 -q");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find(bad.string() + ":2:14: error:"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out / "sweep.csv"));
+  EXPECT_FALSE(fs::exists(out / "sweep.json"));
+  EXPECT_FALSE(fs::exists(out / "reference.png"));
+}
+
+TEST_F(SweepCli, OutputThatIsAFileExitsWith1) {
+  const fs::path scene = write("small.sc", kSmallScene);
+  const fs::path file = write("taken", "not a folder\n");
+  const test::RunResult run =
+      prism("sweep " + test::quoted(scene) + " -o " + test::quoted(file) + " --size 8 6 -q");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("prism: error:"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(file.string()), std::string::npos) << run.err;
+  EXPECT_EQ(test::slurp(file), "not a folder\n");
 }
 
 } // namespace

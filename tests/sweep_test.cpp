@@ -44,7 +44,7 @@ Rgb levels(double r, double g, double b) {
   return Rgb(float(r / 128.0), float(g / 128.0), float(b / 128.0));
 }
 
-TEST(CompareImages, IdenticalPicturesHaveNoError) {
+TEST(SweepCompareImages, IdenticalPicturesHaveNoError) {
   const std::vector<Rgb> picture{levels(10, 20, 30),    levels(200, 0, 5), levels(0, 0, 0),
                                  levels(128, 128, 128), levels(255, 1, 2), levels(7, 70, 140)};
   const ImageError e = compareImages(picture, 0.8, picture, 0.8, 3, 2);
@@ -56,7 +56,7 @@ TEST(CompareImages, IdenticalPicturesHaveNoError) {
   EXPECT_EQ(e.over2, 0.0);
 }
 
-TEST(CompareImages, OneChannelOffGivesTheHandComputedPsnrAndWorstPixel) {
+TEST(SweepCompareImages, OneChannelOffGivesTheHandComputedPsnrAndWorstPixel) {
   // 3 x 2 pixels, both exposed by avgmax 1 (scale 128).
   const std::vector<Rgb> reference{levels(10, 20, 30), levels(40, 50, 60), levels(70, 80, 90),
                                    levels(1, 2, 3),    levels(4, 5, 6),    levels(100, 64, 7)};
@@ -75,7 +75,7 @@ TEST(CompareImages, OneChannelOffGivesTheHandComputedPsnrAndWorstPixel) {
   EXPECT_DOUBLE_EQ(e.over2, 1.0 / 6.0);
 }
 
-TEST(CompareImages, ExposureRoundsHalvesAwayFromZeroAndCapsAt255) {
+TEST(SweepCompareImages, ExposureRoundsHalvesAwayFromZeroAndCapsAt255) {
   // Pixel 0: 100.5 levels rounds to 101 (not to the even 100): 1 level off
   // 100. Pixel 1: 384 and 320 levels both show as 255: no 8-bit difference,
   // though their radiance differs by 0.5.
@@ -91,7 +91,7 @@ TEST(CompareImages, ExposureRoundsHalvesAwayFromZeroAndCapsAt255) {
   EXPECT_DOUBLE_EQ(e.psnr, 10.0 * std::log10(255.0 * 255.0 * 6.0));
 }
 
-TEST(CompareImages, EachPictureIsExposedByItsOwnAvgmax) {
+TEST(SweepCompareImages, EachPictureIsExposedByItsOwnAvgmax) {
   // The same radiance; the shown picture exposed by avgmax 2 (scale 64)
   // against the reference's 1 (scale 128): every level halves.
   //   pixel (0,0):  0  0 0 ->  0 0 0  off 0 0 0
@@ -111,7 +111,7 @@ TEST(CompareImages, EachPictureIsExposedByItsOwnAvgmax) {
   EXPECT_NEAR(e.psnr, 42.1102, 1e-4);
 }
 
-TEST(CompareImages, TheFirstWorstPixelInRowMajorOrderIsReported) {
+TEST(SweepCompareImages, TheFirstWorstPixelInRowMajorOrderIsReported) {
   const std::vector<Rgb> reference(6, levels(50, 50, 50));
   std::vector<Rgb> shown = reference;
   shown[4] = levels(50, 59, 50); // (1, 1): 9 levels
@@ -124,7 +124,7 @@ TEST(CompareImages, TheFirstWorstPixelInRowMajorOrderIsReported) {
   EXPECT_DOUBLE_EQ(e.over2, 2.0 / 6.0);
 }
 
-TEST(CompareImages, MismatchedSizesThrow) {
+TEST(SweepCompareImages, MismatchedSizesThrow) {
   const std::vector<Rgb> four(4, Rgb(0.5f)), six(6, Rgb(0.5f));
   EXPECT_THROW(compareImages(four, 1.0, six, 1.0, 2, 2), std::invalid_argument);
   EXPECT_THROW(compareImages(six, 1.0, four, 1.0, 2, 2), std::invalid_argument);
@@ -134,7 +134,7 @@ TEST(CompareImages, MismatchedSizesThrow) {
 
 // ------------------------------------------------------------ referenceSamplePoint
 
-TEST(ReferenceSamplePoint, EveryPointLiesInItsOwnStratum) {
+TEST(SweepReferenceSamplePoint, EveryPointLiesInItsOwnStratum) {
   for (const auto& [x, y] : std::vector<std::pair<int, int>>{{0, 0}, {5, 3}, {17, 11}, {0, 9}}) {
     std::set<std::pair<double, double>> points;
     for (int j = 0; j < kReferenceSide; ++j) {
@@ -159,7 +159,7 @@ std::pair<double, double> offsetInStratum(int x, int y, int i, int j) {
   return {(px - x) * 8.0 - i, (py - y) * 8.0 - j};
 }
 
-TEST(ReferenceSamplePoint, JitteredDifferentlyPerPixelAndStratumAndDeterministic) {
+TEST(SweepReferenceSamplePoint, JitteredDifferentlyPerPixelAndStratumAndDeterministic) {
   // Within a pixel: not all at one place of their strata (not a grid).
   std::set<std::pair<double, double>> offsets;
   for (int j = 0; j < kReferenceSide; ++j)
@@ -206,7 +206,7 @@ surface 0.8 0.6 0.4  0.5 0 0  1 1
 polygon 4  -1000 -1000 0  1000 -1000 0  1000 1000 0  -1000 1000 0
 )";
 
-TEST(Reference, AmbientLitPlaneIsKnownByHand) {
+TEST(SweepReference, AmbientLitPlaneIsKnownByHand) {
   const Scene scene = parseScene(kAmbientPlane, "plane.sc");
   const auto accel = makeAccel(scene, AccelKind::Bvh);
   ThreadPoolExecutor executor(2);
@@ -267,7 +267,7 @@ polygon 4  -100 -100 3  -100 100 3  100 100 3  100 -100 3
 // mirrors square on for ever.
 constexpr int kMirrorW = 13, kMirrorH = 9;
 
-TEST(Reference, FacingMirrorsNeedDeeperThan8AndMatchPlainRenders) {
+TEST(SweepReference, FacingMirrorsNeedDeeperThan8AndMatchPlainRenders) {
   const Scene scene = parseScene(kFacingMirrors, "mirrors.sc");
   const auto accel = makeAccel(scene, AccelKind::Bvh);
   ThreadPoolExecutor executor(2);
@@ -356,7 +356,7 @@ TEST(Reference, FacingMirrorsNeedDeeperThan8AndMatchPlainRenders) {
     EXPECT_LE(std::max({c.r, c.g, c.b}), 2.0f / 3.0f + 1e-5f);
 }
 
-TEST(Reference, ThreadCountDoesNotChangeIt) {
+TEST(SweepReference, ThreadCountDoesNotChangeIt) {
   for (const char* text : {kFacingMirrors, kAmbientPlane}) {
     const Scene scene = parseScene(text, "t.sc");
     const auto accel = makeAccel(scene, AccelKind::Bvh);
@@ -378,7 +378,7 @@ TEST(Reference, ThreadCountDoesNotChangeIt) {
   }
 }
 
-TEST(Reference, ProgressRisesToOne) {
+TEST(SweepReference, ProgressRisesToOne) {
   const Scene scene = parseScene(kFacingMirrors, "mirrors.sc");
   const auto accel = makeAccel(scene, AccelKind::Bvh);
   ThreadPoolExecutor executor(1);

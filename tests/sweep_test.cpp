@@ -400,15 +400,28 @@ TEST(SweepGrid, DefaultHas408SettingsInTheDocumentedOrder) {
   // 8 depths x 3 bailouts x (no-aa + 2 jitters x 8 thresholds).
   ASSERT_EQ(all.size(), 408u);
   // By depth, then bailout; --no-aa first, then jitter, then threshold.
-  EXPECT_EQ(all[0], (SweepSetting{false, 0.0, 1, false, 0.0}));
+  EXPECT_EQ(all[0], (SweepSetting{false, 0.1, 1, false, 0.0}));
   EXPECT_EQ(all[1], (SweepSetting{true, 0.0, 1, false, 0.0}));
   EXPECT_EQ(all[8], (SweepSetting{true, 1.0, 1, false, 0.0}));
   EXPECT_EQ(all[9], (SweepSetting{true, 0.0, 1, true, 0.0}));
-  EXPECT_EQ(all[17], (SweepSetting{false, 0.0, 1, false, 0.5}));
-  EXPECT_EQ(all[51], (SweepSetting{false, 0.0, 2, false, 0.0}));
+  EXPECT_EQ(all[17], (SweepSetting{false, 0.1, 1, false, 0.5}));
+  EXPECT_EQ(all[51], (SweepSetting{false, 0.1, 2, false, 0.0}));
   EXPECT_EQ(all[407], (SweepSetting{true, 1.0, 8, true, 2.0}));
   // The default setting of `prism render` is among them.
   EXPECT_NE(std::find(all.begin(), all.end(), SweepSetting{}), all.end());
+}
+
+TEST(SweepGrid, EverySettingReadsBackFromTheTableAsWritten) {
+  std::vector<SweepRow> rows;
+  for (const SweepSetting& setting : SweepGrid{}.settings()) {
+    SweepRow row;
+    row.setting = setting;
+    rows.push_back(row);
+  }
+  const std::vector<SweepRow> back = parseSweepCsv(formatSweepCsv(rows));
+  ASSERT_EQ(back.size(), rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_EQ(back[i].setting, rows[i].setting) << settingOptions(rows[i].setting);
 }
 
 // ------------------------------------------------------------------- runSweep
@@ -434,12 +447,12 @@ TEST(RunSweep, EveryRowIsWhatAPlainRenderOfItsSettingGives) {
   const std::vector<SweepSetting> settings = grid.settings();
   ASSERT_EQ(settings.size(), 2u * 3u * (1u + 2u * 3u));
   // The order by hand: depth, bailout; no-aa, then jitter, then threshold.
-  EXPECT_EQ(settings[0], (SweepSetting{false, 0.0, 1, false, 0.0}));
+  EXPECT_EQ(settings[0], (SweepSetting{false, 0.1, 1, false, 0.0}));
   EXPECT_EQ(settings[3], (SweepSetting{true, 1.0, 1, false, 0.0}));
   EXPECT_EQ(settings[4], (SweepSetting{true, 0.0, 1, true, 0.0}));
-  EXPECT_EQ(settings[7], (SweepSetting{false, 0.0, 1, false, 0.5}));
-  EXPECT_EQ(settings[14], (SweepSetting{false, 0.0, 1, false, 8.0}));
-  EXPECT_EQ(settings[21], (SweepSetting{false, 0.0, 3, false, 0.0}));
+  EXPECT_EQ(settings[7], (SweepSetting{false, 0.1, 1, false, 0.5}));
+  EXPECT_EQ(settings[14], (SweepSetting{false, 0.1, 1, false, 8.0}));
+  EXPECT_EQ(settings[21], (SweepSetting{false, 0.1, 3, false, 0.0}));
   EXPECT_EQ(settings[41], (SweepSetting{true, 1.0, 3, true, 8.0}));
 
   std::vector<SweepProgress> progress;

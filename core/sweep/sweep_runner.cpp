@@ -88,7 +88,15 @@ std::vector<SweepSetting> SweepGrid::settings() const {
   std::vector<SweepSetting> all;
   for (int depth : depths) {
     for (double bailout : bailouts) {
-      if (noAa) all.push_back({false, 0.0, depth, false, bailout});
+      if (noAa) {
+        // The threshold and jitter keep their defaults, which do not apply:
+        // the setting reads back from the table as it was written.
+        SweepSetting plain;
+        plain.antialias = false;
+        plain.depth = depth;
+        plain.bailout = bailout;
+        all.push_back(plain);
+      }
       for (bool jitter : jitters)
         for (double thresh : thresholds)
           all.push_back({true, thresh, depth, jitter, bailout});

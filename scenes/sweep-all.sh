@@ -3,7 +3,7 @@
 # quarter of their resolution (160 x 120, tree.sc 128 x 128), the data and
 # plots of docs/choosing-settings.md, and links each scene's sweep.csv beside
 # it (scenes/NAME.sweep.csv), where the previewer finds it, and the tables of
-# docs/sweeps/summary.md (tools/sweep_summary.py). About 6 minutes on
+# docs/sweeps/summary.md (tools/sweep_summary.py). About 3 minutes on
 # 2 cores; run it on an otherwise idle machine, the times are measured.
 # Usage: scenes/sweep-all.sh [path/to/prism]   (default: build/prism)
 set -euo pipefail

@@ -26,24 +26,6 @@ constexpr std::array<float, 3> kDarkGrey{0.3f, 0.3f, 0.3f};
 constexpr SweepSetting kDefaultSetting{
     .antialias = true, .thresh = 0.1, .depth = 5, .jitter = false, .bailout = 0.0};
 
-bool same(double a, double b) { return std::abs(a - b) <= 1e-9; }
-
-// The row measured with `wanted`, or nullptr. Compared here rather than with
-// findSetting (sweep_table.cpp) so that the charts need only the table's
-// types; a --no-aa row matches whatever threshold and jitter it records, as
-// those do not apply to it.
-const SweepRow* rowWith(const std::vector<SweepRow>& rows, const SweepSetting& wanted) {
-  for (const SweepRow& row : rows) {
-    const SweepSetting& s = row.setting;
-    if (s.antialias != wanted.antialias || s.depth != wanted.depth ||
-        !same(s.bailout, wanted.bailout))
-      continue;
-    if (s.antialias && (!same(s.thresh, wanted.thresh) || s.jitter != wanted.jitter)) continue;
-    return &row;
-  }
-  return nullptr;
-}
-
 // PSNR is +infinity for a setting whose picture equals the reference. A chart
 // has no room at infinity, so such rows are drawn 5 dB above the most
 // accurate measured one (the same height on every chart), and the chart's
@@ -109,7 +91,7 @@ Chart timeVsError(const std::vector<SweepRow>& rows, const std::string& sceneNam
   // Drawn before the front and larger, so a default on the front shows as a
   // blue ring around its red marker.
   ChartSeries defaults{.label = "default", .color = kBlue, .markerSize = 8};
-  if (const SweepRow* row = rowWith(rows, kDefaultSetting))
+  if (const SweepRow* row = findSetting(rows, kDefaultSetting))
     defaults.points.push_back({row->cpuSeconds, psnr(row)});
 
   return {.title = sceneName + ": time against error",
@@ -128,7 +110,7 @@ Chart errorVsDepth(const std::vector<SweepRow>& rows, const std::string& sceneNa
                          SweepSetting setting) {
     ChartSeries s = lineSeries(std::move(label), color);
     for (setting.depth = 1; setting.depth <= kMaxDepth; ++setting.depth)
-      s.points.push_back({double(setting.depth), psnr(rowWith(rows, setting))});
+      s.points.push_back({double(setting.depth), psnr(findSetting(rows, setting))});
     return s;
   };
   Chart chart{.title = sceneName + ": error against ray depth",
@@ -163,14 +145,14 @@ Chart errorVsThreshold(const std::vector<SweepRow>& rows, const std::string& sce
     ChartSeries s = lineSeries(std::move(label), color);
     for (size_t i = 0; i < kThresholds.size(); ++i)
       s.points.push_back(
-          {double(i), psnr(rowWith(rows, {.thresh = kThresholds[i], .jitter = jitter}))});
+          {double(i), psnr(findSetting(rows, {.thresh = kThresholds[i], .jitter = jitter}))});
     return s;
   };
   chart.series = {along("grid sub-samples", kBlue, false), along("jittered", kOrange, true)};
 
   // Without antialiasing the threshold does not apply: one value, drawn
   // across every category for comparison.
-  if (const SweepRow* noAa = rowWith(rows, {.antialias = false})) {
+  if (const SweepRow* noAa = findSetting(rows, {.antialias = false})) {
     const double level = psnr(noAa);
     chart.series.push_back({.label = "--no-aa",
                             .points = {{0.0, level}, {double(kThresholds.size() - 1), level}},

@@ -1,5 +1,6 @@
 #include "core/shapes/polygon.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace prism {
@@ -22,6 +23,48 @@ Vec3 newellNormal(std::span<const Vec3> v) {
   return n;
 }
 
+// The polygon as the ray sees it, as the triangle test sees a triangle
+// (core/shapes/triangle.cpp): each vertex moved by -origin and projected along
+// the ray onto a plane containing it, in 2D, the ray itself at (0, 0). Every
+// polygon sharing an edge projects its two vertices to the very same numbers,
+// whatever the angle between the polygons: so a ray can never pass between
+// two faces of a closed solid, nor be counted by both.
+struct Projected {
+  double x, y;
+};
+
+// Whether (0, 0) is inside the projected polygon by the crossing number of
+// the half-line toward +x, for the point moved to (-eps, +delta) with delta
+// infinitely smaller than eps: a vertex at y = 0 counts as below the
+// half-line, and an edge crossing it exactly at x = 0 counts as crossing.
+// Each edge's crossing is decided by the sign of e = a.x b.y - a.y b.x (the
+// crossing lies at x = e / (b.y - a.y)); the polygon on the other side of the
+// edge walks it b -> a and computes exactly -e (the same two products,
+// subtracted the other way round), so the two always decide alike: the
+// polygons around a point, edge or vertex it lies on, contain it exactly
+// once. No division; every edge evaluated and counted without a branch, since
+// which edges straddle is as good as random from one ray to the next.
+template <int kz>
+[[gnu::always_inline]] inline bool passesInside(const Vec3* vertices, std::uint32_t count,
+                                                const Ray& ray) {
+  constexpr int kx = (kz + 1) % 3, ky = (kz + 2) % 3;
+  const Vec3& d = ray.dir;
+  const auto project = [&](const Vec3& vertex) {
+    const Vec3 p = vertex - ray.origin;
+    return Projected{p[kx] * d[kz] - p[kz] * d[kx], p[ky] * d[kz] - p[kz] * d[ky]};
+  };
+  Projected a = project(vertices[count - 1]);
+  bool inside = false;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const Projected b = project(vertices[i]);
+    const bool straddles = (a.y > 0.0) != (b.y > 0.0);
+    const double e = a.x * b.y - a.y * b.x;
+    inside ^= straddles & ((e == 0.0) | ((e > 0.0) == (b.y > a.y)));
+    a = b;
+  }
+  return inside;
+}
+
 } // namespace
 
 ProjectedAxes polygonAxes(const Polygon& p) {
@@ -34,30 +77,43 @@ bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* e
   if (denom == 0.0) return false; // parallel, or lying in the plane: no area is hit
   const double tp = (p.planeOffset - glm::dot(p.normal, ray.origin)) / denom;
   if (!range.contains(tp)) return false;
-
-  // Crossing-number test in the projection plane: a horizontal half-line from the
-  // point toward +u, counting edge crossings. Half-open rules (a vertex counts as
-  // above when v > p.v, a crossing counts when p.u < x) make a point on an edge
-  // shared by two coplanar polygons belong to exactly one of them, and each edge
-  // is evaluated from its lower endpoint so both polygons compute the same x.
-  // Every edge's x is computed and then counted or not, without a branch: which
-  // edges cross is as good as random from one ray to the next, and mispredicted
-  // branches cost more than the divisions (x is used only where the edge
-  // crosses, so a 0/0 elsewhere does no harm).
-  const int uAxis = kProjectedAxes[p.dropAxis][0], vAxis = kProjectedAxes[p.dropAxis][1];
-  const Vec3 point = ray.at(tp);
-  const double qu = point[uAxis], qv = point[vAxis];
   const Vec3* v = vertices + p.firstVertex;
   bool inside = false;
-  if (edges != nullptr) {
-    inside = edges->contains(v, p.vertexCount, uAxis, vAxis, qu, qv);
+  if (p.rayFrameTest) {
+    const Vec3 m = glm::abs(ray.dir);
+    inside = m.x >= m.y ? (m.x >= m.z ? passesInside<0>(v, p.vertexCount, ray)
+                                      : passesInside<2>(v, p.vertexCount, ray))
+                        : (m.y >= m.z ? passesInside<1>(v, p.vertexCount, ray)
+                                      : passesInside<2>(v, p.vertexCount, ray));
   } else {
-    double au = v[p.vertexCount - 1][uAxis], av = v[p.vertexCount - 1][vAxis];
-    for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
-      const double bu = v[i][uAxis], bv = v[i][vAxis];
-      inside ^= ((av > qv) != (bv > qv)) & (qu < edgeCrossingU(au, av, bu, bv, qv));
-      au = bu;
-      av = bv;
+    // A polygon of many vertices, or one whose vertices lie off its plane:
+    // the crossing-number test in the plane's own projection, of the point
+    // where the ray meets the plane (for a polygon that is not planar the
+    // ray-frame test could accept a grazing ray whose point on the plane lies
+    // far outside the vertices' box, where a hierarchy would cull it). The
+    // edge index, when given, finds the few edges a horizontal line can
+    // cross (core/shapes/polygon_edges.h). Half-open rules (a vertex counts
+    // as above when v > p.v, a crossing counts when p.u < x) give a point on
+    // an edge shared with a *coplanar* polygon to exactly one of them; across
+    // an edge with a polygon at an angle the two planes' projections are not
+    // the same numbers, and a ray through the edge itself may pass between
+    // them (docs/limits.md).
+    const int uAxis = kProjectedAxes[p.dropAxis][0], vAxis = kProjectedAxes[p.dropAxis][1];
+    const Vec3 point = ray.at(tp);
+    const double qu = point[uAxis], qv = point[vAxis];
+    if (edges != nullptr) {
+      inside = edges->contains(v, p.vertexCount, uAxis, vAxis, qu, qv);
+    } else {
+      // Every edge's x is computed and then counted or not, without a
+      // branch: mispredicted branches cost more than the divisions (x is
+      // used only where the edge crosses, so a 0/0 elsewhere does no harm).
+      double au = v[p.vertexCount - 1][uAxis], av = v[p.vertexCount - 1][vAxis];
+      for (std::uint32_t i = 0; i < p.vertexCount; ++i) {
+        const double bu = v[i][uAxis], bv = v[i][vAxis];
+        inside ^= ((av > qv) != (bv > qv)) & (qu < edgeCrossingU(au, av, bu, bv, qv));
+        au = bu;
+        av = bv;
+      }
     }
   }
   if (inside) t = tp;
@@ -130,6 +186,15 @@ Polygon makePolygon(std::span<const Vec3> vertices) {
   p.planeOffset = glm::dot(p.normal, mean);
   const Vec3 a = glm::abs(p.normal);
   p.dropAxis = std::uint8_t(a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2));
+  // Planar to within the round-off of the plane's own computation: the
+  // vertices' distances from it are then a few ulps of their coordinates.
+  double magnitude = 0.0, offPlane = 0.0;
+  for (const Vec3& v : vertices) {
+    magnitude = std::max(magnitude, maxAbsComponent(v));
+    offPlane = std::max(offPlane, std::abs(glm::dot(p.normal, v) - p.planeOffset));
+  }
+  p.rayFrameTest =
+      p.vertexCount < kIndexedPolygonVertices && offPlane <= kPlanarRoundoff * magnitude;
   return p;
 }
 

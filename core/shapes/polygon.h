@@ -28,6 +28,10 @@ struct Polygon {
   Vec3 normal{0.0, 0.0, 1.0}; // unit, outward by the right-hand rule
   double planeOffset = 0.0;   // dot(normal, x) for points x on the plane
   std::uint8_t dropAxis = 2;  // the axis dropped to test containment in 2D
+  // Containment is decided in the ray's frame (watertight: polygon.cpp):
+  // for planar polygons without an edge index. The others are tested in the
+  // plane's projection.
+  bool rayFrameTest = false;
   // Into Scene::polygonEdgeIndices for a polygon of many vertices (see
   // core/shapes/polygon_edges.h), or kNoEdgeIndex.
   std::uint32_t edgeIndex = kNoEdgeIndex;
@@ -35,6 +39,11 @@ struct Polygon {
   std::uint32_t material = 0;
   Origin origin;
 };
+
+// Vertices may lie off the polygon's plane by this much of their largest
+// coordinate and still count as planar: a few ulps, the round-off of the
+// plane's own computation.
+inline constexpr double kPlanarRoundoff = 0x1p-40;
 
 // `edges` is the polygon's edge index, or null to test every edge (the answer
 // is the same; the index makes it logarithmic in the number of vertices).

@@ -8,6 +8,7 @@
 # Usage: .ci/fuzz.sh [SECONDS_PER_TARGET]   (default: $PRISM_FUZZ_SECONDS, else 60)
 #   PRISM_FUZZ_TARGETS="sc obj"  run only these targets (sc nff obj roundtrip sweep_csv)
 #   PRISM_FUZZ_BUILD_DIR=DIR     build elsewhere than build-fuzz
+#   PRISM_FUZZ_JOBS=N            targets run at once (default: the cores)
 # Needs the Debian packages clang-14 and libclang-rt-14-dev (libFuzzer's runtime).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,9 +39,6 @@ cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=
 cmake --build "$build" --target fuzzers -j"$(nproc)"
 echo "build: $((SECONDS - started)) s"
 
-failed=()
-summary=()
-
 # Prints what a failed run left: libFuzzer's report, then each reproducer.
 report() { # LOG INPUT...
   local log=$1
@@ -59,7 +57,13 @@ report() { # LOG INPUT...
   ((found)) || echo "---- (libFuzzer saved no input)"
 }
 
-for target in "${targets[@]}"; do
+# One target: its regressions, then fuzzing. Its output goes to
+# $scratch/TARGET.out, its summary line and any failure to files beside it,
+# so that targets can run side by side; TARGET.done marks that it ran to its
+# end (errexit ends a job at a failed command without a word).
+fuzz_target() { # TARGET
+  local target=$1 exe dict artifacts flags regressions crashed corpus log status
+  local last runs rate cov ft corp line
   exe="$build/fuzz/fuzz_$target"
   dict="$scratch/$target.dict"
   if [[ $target == roundtrip ]]; then
@@ -85,8 +89,9 @@ for target in "${targets[@]}"; do
       crashed=$(sed -n 's/^Running: //p' "$scratch/$target-regressions.log" | tail -n 1)
       echo "FAILED: $target crashes on a reproducer in fuzz/regressions/$target"
       report "$scratch/$target-regressions.log" "$crashed"
-      failed+=("$target (regressions)")
-      continue
+      echo "$target (regressions)" >"$scratch/$target.failed"
+      : >"$scratch/$target.done"
+      return
     fi
   fi
 
@@ -109,11 +114,39 @@ for target in "${targets[@]}"; do
   if ((status != 0)); then
     echo "FAILED: $target (libFuzzer exit status $status)"
     report "$log" "$artifacts"/*
-    failed+=("$target")
+    echo "$target" >"$scratch/$target.failed"
     line+="  FAILED"
   fi
   echo "$line"
-  summary+=("$line")
+  echo "$line" >"$scratch/$target.summary"
+  : >"$scratch/$target.done"
+}
+
+# The targets side by side, one per core (each libFuzzer process is single
+# threaded), their outputs printed in order once all have run.
+jobs=${PRISM_FUZZ_JOBS:-$(nproc)}
+running=0
+for target in "${targets[@]}"; do
+  fuzz_target "$target" >"$scratch/$target.out" 2>&1 &
+  running=$((running + 1))
+  if ((running >= jobs)); then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait || true
+
+failed=()
+summary=()
+for target in "${targets[@]}"; do
+  cat "$scratch/$target.out"
+  [[ -f $scratch/$target.summary ]] && summary+=("$(cat "$scratch/$target.summary")")
+  if [[ -f $scratch/$target.failed ]]; then
+    failed+=("$(cat "$scratch/$target.failed")")
+  elif [[ ! -f $scratch/$target.done ]]; then
+    # A command of fuzz_target failed (errexit ended its job early).
+    failed+=("$target (the script stopped early: see its output above)")
+  fi
 done
 
 echo "== Summary ($((SECONDS - started)) s in all, build included)"

@@ -293,12 +293,9 @@ pop
   EXPECT_EQ(missesThroughVerticesAndEdges(scene, faces), (std::array<int, 3>{0, 0, 0}));
 }
 
-// The same for a cube of six polygons, each tested alone in the ray's frame
-// (core/shapes/polygon.cpp). In each polygon's own plane projection, as
-// before, 734 of 1536 rays through vertices, 602 through edge midpoints and
-// 634 a third along edges passed between the faces.
-TEST(Watertight, RaysIntoAClosedCubeOfPolygonsThroughVerticesAndEdgesAlwaysHit) {
-  const Scene scene = parseScene(R"(
+// A cube of six polygons, turned and moved so that no coordinate is special.
+Scene turnedCubeOfPolygons() {
+  return parseScene(R"(
 push rotate 3 -1 2 29 translate 5 1 -2
 polygon 4  -1 -1 -1  -1 1 -1  1 1 -1  1 -1 -1
 polygon 4  -1 -1 1  1 -1 1  1 1 1  -1 1 1
@@ -308,7 +305,15 @@ polygon 4  -1 -1 -1  -1 -1 1  -1 1 1  -1 1 -1
 polygon 4  1 -1 -1  1 1 -1  1 1 1  1 -1 1
 pop
 )",
-                                 "cube.sc");
+                    "cube.sc");
+}
+
+// The same for a cube of six polygons, each tested alone in the ray's frame
+// (core/shapes/polygon.cpp). In each polygon's own plane projection, as
+// before, 734 of 1536 rays through vertices, 602 through edge midpoints and
+// 634 a third along edges passed between the faces.
+TEST(Watertight, RaysIntoAClosedCubeOfPolygonsThroughVerticesAndEdgesAlwaysHit) {
+  const Scene scene = turnedCubeOfPolygons();
   std::vector<std::vector<Vec3>> faces;
   for (const Polygon& poly : scene.shapes<Polygon>())
     faces.emplace_back(scene.polygonVertices.begin() + poly.firstVertex,
@@ -322,17 +327,7 @@ pop
 // toward the ray, exactly one contains it (none: a hole; two: a double hit),
 // each polygon tested on its own.
 TEST(Watertight, RaysThroughACubesEdgesAndCornersEnterThroughExactlyOneFace) {
-  const Scene scene = parseScene(R"(
-push rotate 3 -1 2 29 translate 5 1 -2
-polygon 4  -1 -1 -1  -1 1 -1  1 1 -1  1 -1 -1
-polygon 4  -1 -1 1  1 -1 1  1 1 1  -1 1 1
-polygon 4  -1 -1 -1  1 -1 -1  1 -1 1  -1 -1 1
-polygon 4  -1 1 -1  -1 1 1  1 1 1  1 1 -1
-polygon 4  -1 -1 -1  -1 -1 1  -1 1 1  -1 1 -1
-polygon 4  1 -1 -1  1 1 -1  1 1 1  1 -1 1
-pop
-)",
-                                 "cube.sc");
+  const Scene scene = turnedCubeOfPolygons();
   const auto& polygons = scene.shapes<Polygon>();
   ASSERT_EQ(polygons.size(), 6u);
   Vec3 centre(0.0);

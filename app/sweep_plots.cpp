@@ -23,8 +23,7 @@ constexpr std::array<float, 3> kPurple{0.55f, 0.2f, 0.7f};
 constexpr std::array<float, 3> kDarkGrey{0.3f, 0.3f, 0.3f};
 
 // What `prism render` does without options.
-constexpr SweepSetting kDefaultSetting{
-    .antialias = true, .thresh = 0.1, .depth = 5, .jitter = false, .bailout = 0.0};
+constexpr SweepSetting kDefaultSetting{};
 
 // PSNR is +infinity for a setting whose picture equals the reference. A chart
 // has no room at infinity, so such rows are drawn 5 dB above the most

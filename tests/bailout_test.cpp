@@ -80,13 +80,8 @@ TEST(BailoutBound, TheBackgroundBoundsARayThatMissesEverything) {
 }
 
 RenderResult renderWith(const Scene& scene, int size, int depth, bool noAa, double bailout) {
-  RenderSettings s;
-  s.width = s.height = size;
-  s.maxDepth = depth;
-  s.noAa = noAa;
-  s.bailout = bailout;
-  s.threads = 2;
-  return render(scene, *makeAccel(scene, AccelKind::Bvh), s);
+  return render(scene, *makeAccel(scene, AccelKind::Bvh),
+                test::squareSettings(size, depth, noAa, bailout));
 }
 
 // The promise for one pair of renders, at every sample where both took the

@@ -2,7 +2,20 @@
 // mirrors facing each other, with and without glass between them.
 #pragma once
 
+#include "core/render/renderer.h"
+
 namespace prism::test {
+
+// What both tests render these scenes with: a square image on two threads.
+inline RenderSettings squareSettings(int size, int depth, bool noAa, double bailout) {
+  RenderSettings s;
+  s.width = s.height = size;
+  s.maxDepth = depth;
+  s.noAa = noAa;
+  s.bailout = bailout;
+  s.threads = 2;
+  return s;
+}
 
 // Two facing mirrors at x = +-3, the eye between them looking along the gap,
 // so eye rays bounce from one to the other. kMirrors: wide mirrors (ksr 0.7),

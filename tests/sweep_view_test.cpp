@@ -94,7 +94,7 @@ TEST(SweepView, TheCurrentSettingsAndTheBestAtTheirCost) {
   EXPECT_TRUE(s.error.empty());
   ASSERT_TRUE(s.current);
   EXPECT_EQ(s.current->setting, aa(5, 0.1));
-  EXPECT_FALSE(s.currentOnFront);
+  EXPECT_FALSE(s.currentOnFront());
   ASSERT_TRUE(s.best);
   EXPECT_EQ(s.best->setting, aa(3, 0.1)); // cheaper and better
   const std::vector<std::string> want{
@@ -112,7 +112,7 @@ TEST(SweepView, TheCurrentSettingsAndTheBestAtTheirCost) {
 TEST(SweepView, SaysWhenTheCurrentSettingIsOnTheFront) {
   const SweepStatus s = sweepStatus(sweep(), settings(8, 0.0, false, false, 0.5));
   ASSERT_TRUE(s.current && s.best);
-  EXPECT_TRUE(s.currentOnFront);
+  EXPECT_TRUE(s.currentOnFront());
   EXPECT_EQ(s.best->setting, s.current->setting);
   ASSERT_EQ(s.lines.size(), 7u);
   EXPECT_EQ(s.lines[1], "these settings: --depth 8 --thresh 0 --bailout 0.5");
@@ -123,7 +123,7 @@ TEST(SweepView, SaysWhenTheCurrentSettingIsOnTheFront) {
   // The dearest row is worse than a cheaper exact one: the best is the exact one.
   const SweepStatus dear = sweepStatus(sweep(), settings(8, 0.0, true));
   ASSERT_TRUE(dear.current && dear.best);
-  EXPECT_FALSE(dear.currentOnFront);
+  EXPECT_FALSE(dear.currentOnFront());
   EXPECT_EQ(dear.best->setting, aa(8, 0.0, false, 0.5));
   EXPECT_EQ(dear.lines.back(), "Pareto-optimal at the same cost: --depth 8 --thresh 0 --bailout "
                                "0.5, inf dB (the reference itself), 9 s");
@@ -131,7 +131,7 @@ TEST(SweepView, SaysWhenTheCurrentSettingIsOnTheFront) {
   // Without antialiasing, whatever the threshold and jitter.
   const SweepStatus plain = sweepStatus(sweep(), settings(1, 0.7, true, true));
   ASSERT_TRUE(plain.current);
-  EXPECT_TRUE(plain.currentOnFront);
+  EXPECT_TRUE(plain.currentOnFront());
   EXPECT_EQ(plain.lines[1], "these settings: --depth 1 --no-aa");
 }
 

@@ -211,7 +211,7 @@ TEST(ViewController, ReadsTheSweepBesideTheSceneWithEveryLoad) {
   status = c.sweepStatus();
   ASSERT_TRUE(status.current);
   EXPECT_EQ(status.current->error.psnr, 45.0);
-  EXPECT_TRUE(status.currentOnFront);
+  EXPECT_TRUE(status.currentOnFront());
 
   // A malformed table says where; the scene is shown all the same.
   writeFile(dir / "main.sweep.csv", sweepCsv(45.0) + "1,2\n");

@@ -29,13 +29,7 @@ const char* kDiffuse = "eye 0 0 4\nlookat 0 0 0\nlight 2 3 4  30 30 30\n"
                        "polygon 4  -5 -1 -5  -5 -1 5  5 -1 5  5 -1 -5\n";
 
 RenderSettings settingsFor(int size, int depth, double bailout = 0.0) {
-  RenderSettings s;
-  s.width = s.height = size;
-  s.maxDepth = depth;
-  s.noAa = true;
-  s.bailout = bailout;
-  s.threads = 2;
-  return s;
+  return test::squareSettings(size, depth, true, bailout);
 }
 
 WorkEstimate estimateFor(const char* text, const RenderSettings& settings) {

@@ -104,7 +104,6 @@ SweepStatus sweepStatus(const LoadedSweep& sweep, const RenderSettings& settings
     return status;
   }
   status.current = *current;
-  status.currentOnFront = current->pareto;
   const ImageError& e = current->error;
   lines.push_back("expected PSNR " + psnrText(e.psnr));
   lines.push_back("pixels more than 2 levels off: " + percentText(e.over2));
@@ -112,7 +111,7 @@ SweepStatus sweepStatus(const LoadedSweep& sweep, const RenderSettings& settings
                   std::to_string(e.worstX) + ", " + std::to_string(e.worstY) + ")");
   lines.push_back("CPU time in the sweep: " + secondsText(current->cpuSeconds));
   if (const SweepRow* best = bestWithinCost(sweep.rows, current->cpuSeconds)) status.best = *best;
-  if (status.currentOnFront) {
+  if (status.currentOnFront()) {
     lines.push_back("on the Pareto front: no setting of the sweep is as cheap and more accurate");
   } else if (status.best) {
     lines.push_back("Pareto-optimal at the same cost: " + settingOptions(status.best->setting) +

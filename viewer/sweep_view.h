@@ -47,8 +47,10 @@ struct SweepStatus {
   // The most accurate row of the front that costs at most the current row's
   // CPU seconds (bestWithinCost), when the current row is known.
   std::optional<SweepRow> best;
-  bool currentOnFront = false;    // no row is as cheap and more accurate
   std::vector<std::string> lines; // the text, one a line
+
+  // No row is as cheap and more accurate than the current one.
+  bool currentOnFront() const { return current && current->pareto; }
 };
 
 SweepStatus sweepStatus(const LoadedSweep& sweep, const RenderSettings& settings);

@@ -22,6 +22,8 @@ struct ImageError {
   int worstX = 0, worstY = 0;
   // The share of pixels with some channel more than 2 levels off.
   double over2 = 0.0;
+
+  bool operator==(const ImageError&) const = default;
 };
 
 // `radiance` and `reference` are linear radiance of `width` x `height`

@@ -13,7 +13,8 @@
 
 namespace prism {
 
-// One point of the grid: the settings that trade time for accuracy.
+// One point of the grid: the settings that trade time for accuracy. The
+// defaults are `prism render`'s.
 struct SweepSetting {
   bool antialias = true; // false: --no-aa (thresh and jitter then do not apply)
   double thresh = 0.1;
@@ -32,6 +33,7 @@ std::string settingOptions(const SweepSetting& setting);
 struct RaysPerPixel {
   double eye = 0.0, shadow = 0.0, reflected = 0.0, transmitted = 0.0, pilot = 0.0;
   double total() const { return eye + shadow + reflected + transmitted + pilot; }
+  bool operator==(const RaysPerPixel&) const = default;
 };
 
 struct SweepRow {
@@ -42,6 +44,8 @@ struct SweepRow {
   double supersampled = 0.0; // share of pixels pass 2 supersampled
   ImageError error;
   bool pareto = false; // on the front of cpuSeconds against error.psnr
+
+  bool operator==(const SweepRow&) const = default;
 };
 
 // Marks every row that no other row beats: none is at most as costly (CPU)

@@ -1,12 +1,9 @@
 // One run of the pass schedule on a given executor, with the resources it
-// took: what the sweep measures each setting by, and how the reference finds
-// its pixel centres.
+// took: what the sweep measures each setting by.
 #pragma once
 
 #include "core/render/executor.h"
 #include "core/render/pass_schedule.h"
-
-#include <functional>
 
 namespace prism {
 
@@ -18,13 +15,10 @@ struct TimedRun {
   double wallSeconds = 0.0;
 };
 
-// Called after each tile with the share of this run's tiles done (0..1).
-using TileProgress = std::function<void(double fraction)>;
-
 // Runs the schedule of `settings` over `film` (its size; with Pass1::Keep its
 // centres must be a complete pass 1 of the same scene, size and depth). CPU
 // time is the process's: nothing else should be running meanwhile.
 TimedRun runTimed(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                  Executor& executor, Film film, Pass1 pass1, const TileProgress& progress = {});
+                  Executor& executor, Film film, Pass1 pass1);
 
 } // namespace prism

@@ -6,7 +6,9 @@
 //
 // A midpoint's height depends only on its edge (the two end heights, and a
 // random number hashed from the midpoint's lattice position), so the two
-// triangles sharing an edge move it alike and the surface has no cracks.
+// triangles sharing an edge move it alike and the surface has no cracks. The
+// position is hashed on the lattice of the finest level, so a point gets the
+// same number at every level: larger levels refine the same mountain.
 #include "core/math/hash.h"
 
 #include "scene_parts.h"
@@ -20,8 +22,9 @@ namespace {
 constexpr double kRadius = 10;     // of the hexagon
 constexpr double kSummit = 6.0;    // height of its centre; the rim is at 0
 constexpr double kRoughness = 0.2; // displacement / edge length, at most
+constexpr int kMaxLevel = 8;
 
-long primitives(int level) { return 6L << (2 * level); }
+long primitives(int level) { return (6L << (2 * level)) + 4; } // and the spheres
 
 // A point of the triangular lattice in axial coordinates (q along +x, r at 60
 // degrees from it), with its height.
@@ -39,7 +42,8 @@ double jitter(long q, long r) {
 
 class Mountain {
 public:
-  Mountain(ScWriter& out, int level) : out_(out), scale_(kRadius / double(1L << level)) {}
+  Mountain(ScWriter& out, int level)
+      : out_(out), scale_(kRadius / double(1L << level)), keyStep_(1L << (kMaxLevel - level)) {}
 
   // The triangle (a, b, c), counterclockwise from above, split `level` times.
   void triangle(const LatticePoint& a, const LatticePoint& b, const LatticePoint& c, int level) {
@@ -58,7 +62,8 @@ private:
   LatticePoint midpoint(const LatticePoint& a, const LatticePoint& b) const {
     const long q = (a.q + b.q) / 2, r = (a.r + b.r) / 2; // exact: ends are an even step apart
     const double edge = length(world(a) - world(b));
-    return {q, r, 0.5 * (a.height + b.height) + kRoughness * edge * jitter(q, r)};
+    return {q, r,
+            0.5 * (a.height + b.height) + kRoughness * edge * jitter(q * keyStep_, r * keyStep_)};
   }
   // Angles grow from +x towards -z, counterclockwise seen from above.
   V3 world(const LatticePoint& p) const {
@@ -68,12 +73,13 @@ private:
 
   ScWriter& out_;
   double scale_; // world length of one lattice step
+  long keyStep_; // lattice steps of the finest level in one of this level
 };
 
 void write(ScWriter& out, int level) {
-  out.stage({.eye = {2, 4.2, 24},
-             .lookat = {0, 2.4, 0},
-             .fov = 36,
+  out.stage({.eye = {2, 5, 27},
+             .lookat = {0, 2.2, 0},
+             .fov = 40,
              .lights = {{{-14, 22, 12}, 900}, {{16, 8, 14}, 260}},
              .background = {0.45, 0.6, 0.85},
              .ambient = 0.12});
@@ -88,10 +94,10 @@ void write(ScWriter& out, int level) {
     mountain.triangle(summit, {a[0], a[1], 0}, {b[0], b[1], 0}, level);
   }
   out.surface(glass());
-  out.sphere({-3.8, 2.2, 11}, 1.0);
-  out.sphere({-1.2, 3.4, 12.5}, 0.8);
-  out.sphere({1.4, 2.6, 12}, 1.1);
-  out.sphere({4.0, 1.9, 10.5}, 0.75);
+  out.sphere({-4.2, 2.6, 8.5}, 0.9);
+  out.sphere({-1.4, 3.4, 9.5}, 0.7);
+  out.sphere({1.5, 3.0, 9.2}, 1.0);
+  out.sphere({4.4, 2.4, 8}, 0.7);
 }
 
 } // namespace
@@ -101,8 +107,8 @@ SpdKind mountKind() {
           "a fractal mountain of triangles with four glass spheres",
           "midpoint subdivisions (6 * 4^k triangles + 4 spheres)",
           0,
-          8,
-          [](int level) { return primitives(level) + 4; },
+          kMaxLevel,
+          primitives,
           write};
 }
 

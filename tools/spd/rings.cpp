@@ -34,8 +34,8 @@ void ring(ScWriter& out, V3 centre, V3 axis) {
 void write(ScWriter& out, int layers) {
   const double size = kSpacing * layers; // width and height of the pyramid
   out.stage(
-      {.eye = {1.1 * size + 2, 0.75 * size + 2, 1.5 * size + 3},
-       .lookat = {0, 0.3 * size, 0},
+      {.eye = {1.2 * size + 2, 0.9 * size + 2, 1.75 * size + 3},
+       .lookat = {0, 0.38 * size, 0},
        .fov = 40,
        .lights = {{{1.5 * size + 3, 2.5 * size + 4, 1.2 * size + 4}, 9 * (size + 2) * (size + 2)},
                   {{-2 * size - 4, 1.2 * size + 3, 1.5 * size + 3}, 4 * (size + 2) * (size + 2)}},

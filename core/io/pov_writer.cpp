@@ -4,7 +4,10 @@
 #include "core/io/pov_mapping.h"
 #include "core/io/shape_text/shape_text.h"
 
+#include <cmath>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 namespace prism {
 
@@ -110,18 +113,11 @@ public:
     }
   }
 
+  // Every kind through one overload of `all`, so a kind added to ShapeKinds
+  // without a POV-Ray form here does not compile (rather than vanish from
+  // the converted scene).
   void shapes() {
-    for (const Sphere& s : scene_.shapes<Sphere>())
-      out_ << "sphere { " << vec(s.center) << ", " << num(s.radius) << " " << material(s.material)
-           << " }\n";
-    for (const Ellipsoid& e : scene_.shapes<Ellipsoid>())
-      out_ << "sphere { <0, 0, 0>, 1 " << matrix(e.objectToWorld, e.center) << " "
-           << material(e.material) << " }\n";
-    for (const Polygon& p : scene_.shapes<Polygon>())
-      polygon(p);
-    for (const Cone& c : scene_.shapes<Cone>())
-      cone(c);
-    meshes();
+    std::apply([&](const auto&... kinds) { (all(kinds), ...); }, scene_.storage.vectors);
   }
 
 private:
@@ -129,9 +125,25 @@ private:
     return "material { " + materialName(index) + " }";
   }
 
+  template <class Kind> void all(const std::vector<Kind>& shapes) {
+    for (const Kind& shape : shapes)
+      one(shape);
+  }
+
+  void one(const Sphere& s) {
+    out_ << "sphere { " << vec(s.center) << ", " << num(s.radius) << " " << material(s.material)
+         << " }\n";
+  }
+
+  // The unit sphere, carried into place by the ellipsoid's map.
+  void one(const Ellipsoid& e) {
+    out_ << "sphere { <0, 0, 0>, 1 " << matrix(e.objectToWorld, e.center) << " "
+         << material(e.material) << " }\n";
+  }
+
   // POV-Ray's polygon takes concave polygons as they are (it counts
   // crossings, like Prism); the first vertex is repeated to close it.
-  void polygon(const Polygon& p) {
+  void one(const Polygon& p) {
     const Vec3* v = scene_.polygonVertices.data() + p.firstVertex;
     out_ << "polygon { " << p.vertexCount + 1;
     for (std::uint32_t i = 0; i < p.vertexCount; ++i)
@@ -142,7 +154,7 @@ private:
   // An open cone between its two circles; an elliptic one (the scene
   // language allows any transform) as the unit-height cone of its own frame,
   // carried into place by its matrix.
-  void cone(const Cone& c) {
+  void one(const Cone& c) {
     const Mat3& m = c.objectToWorld;
     out_ << "cone { ";
     if (isCircular(c)) {
@@ -159,8 +171,7 @@ private:
   // Triangles as POV-Ray meshes: one per run of triangles of one material
   // (a mesh has one material), which POV-Ray stores and bounds more cheaply
   // than as many separate objects.
-  void meshes() {
-    const std::vector<Triangle>& triangles = scene_.shapes<Triangle>();
+  void all(const std::vector<Triangle>& triangles) {
     for (std::size_t i = 0; i < triangles.size();) {
       const std::uint32_t run = triangles[i].material;
       out_ << "mesh {\n";

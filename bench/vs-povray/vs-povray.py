@@ -14,7 +14,9 @@ Usage:
   bench/vs-povray/vs-povray.py [time] [SCENE_OR_DIR ...] [options]
       The CPU table: scene, primitives, POV-Ray CPU, Prism CPU and their ratio,
       with adaptive antialiasing (POV-Ray +A0.1 +AM1 +R4, Prism --thresh 0.1)
-      and without (POV-Ray -A, Prism --no-aa). Scenes are the shipped ones
+      and without (POV-Ray -A, Prism --no-aa), and each one's eye rays per
+      pixel (their antialiasing criteria differ, so this says whether the
+      antialiased runs did the same work). Scenes are the shipped ones
       (scenes/table.sc, glass.sc, chex.sc, tree.sc) followed by every path
       given: .sc, .nff or .obj files, or directories, whose such files are
       taken in name order (e.g. the output of a generator under tools/).

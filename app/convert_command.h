@@ -1,5 +1,6 @@
-// `prism convert IN OUT.sc`: reads a scene in any format Prism knows (.sc,
-// .nff, .obj) and writes the equivalent .sc scene.
+// `prism convert IN OUT.sc` / `prism convert IN OUT.pov`: reads a scene in
+// any format Prism knows (.sc, .nff, .obj) and writes the equivalent .sc
+// scene, or POV-Ray 3.7 scene description when OUT ends in .pov.
 #pragma once
 
 #include <string>
@@ -12,7 +13,7 @@ namespace prism {
 
 struct ConvertCommandOptions {
   std::string input;  // .sc, .nff or .obj
-  std::string output; // the .sc file to write
+  std::string output; // the .sc or .pov file to write
   bool quiet = false; // no summary line on stderr
 };
 

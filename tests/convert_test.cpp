@@ -243,9 +243,9 @@ TEST_F(ConvertCli, ObjRendersAndConverts) {
 TEST_F(ConvertCli, ErrorsAndExitCodes) {
   const fs::path nff = write("in.nff", kNff);
   std::string err;
-  // Only .sc is written.
+  // Only .sc and .pov are written.
   EXPECT_EQ(prism("convert '" + nff.string() + "' '" + (dir_ / "out.obj").string() + "'", &err), 2);
-  EXPECT_NE(err.find("convert writes .sc scenes"), std::string::npos) << err;
+  EXPECT_NE(err.find("convert writes .sc and .pov scenes"), std::string::npos) << err;
   // A scene error: located messages, exit 2, nothing written.
   const fs::path bad = write("bad.nff", "s 0 0 0 -1\n");
   EXPECT_EQ(prism("convert '" + bad.string() + "' '" + (dir_ / "out.sc").string() + "'", &err), 2);

@@ -1,0 +1,213 @@
+#include "core/io/pov_writer.h"
+
+#include "core/io/pending_file.h"
+#include "core/io/pov_mapping.h"
+#include "core/io/shape_text/shape_text.h"
+
+#include <cmath>
+#include <sstream>
+#include <tuple>
+#include <vector>
+
+namespace prism {
+
+namespace {
+
+using sc::num;
+
+// POV-Ray's vector literal: <x, y, z>.
+std::string vec(const Vec3& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
+
+std::string materialName(std::uint32_t index) { return "Prism_M" + std::to_string(index); }
+
+// POV-Ray's `matrix` takes the map's columns (its rows act on row vectors)
+// and then the offset: x -> linear x + offset.
+std::string matrix(const Mat3& linear, const Vec3& offset) {
+  std::string text = "matrix <";
+  for (int column = 0; column < 3; ++column) {
+    for (int row = 0; row < 3; ++row)
+      text += num(linear[column][row]) + ", ";
+  }
+  return text + num(offset.x) + ", " + num(offset.y) + ", " + num(offset.z) + ">";
+}
+
+// The size of everything the camera and the lights can reach, which sets the
+// lights' fade distance (pov_mapping.h).
+double sceneSize(const Scene& scene) {
+  Aabb box;
+  box.extend(scene.camera.eye);
+  for (const Light& l : scene.lights)
+    box.extend(l.position);
+  for (const PrimitiveRef& ref : scene.allPrimitives())
+    box.extend(scene.bounds(ref));
+  const double size = glm::length(box.extent());
+  return std::isfinite(size) && size > 0.0 ? size : 1.0;
+}
+
+class PovText {
+public:
+  PovText(std::ostream& out, const Scene& scene) : out_(out), scene_(scene) {}
+
+  void header(const std::string& text) {
+    std::istringstream lines(text);
+    std::string comment;
+    while (std::getline(lines, comment))
+      out_ << "// " << comment << "\n";
+    out_ << "#version 3.7;\n";
+  }
+
+  void globals() {
+    out_ << "#ifndef (Prism_Depth) #declare Prism_Depth = 5; #end\n";
+    // adc_bailout 0: POV-Ray would otherwise drop rays of small weight,
+    // which Prism traces (without --bailout).
+    out_ << "global_settings { assumed_gamma 1.0 max_trace_level Prism_Depth adc_bailout 0 "
+            "ambient_light rgb "
+         << vec(scene_.ambient) << " }\n";
+    out_ << "background { rgb " << vec(scene_.background) << " }\n";
+  }
+
+  // The vectors of Prism's camera (core/scene/camera.cpp) written out, with
+  // neither look_at nor angle, which would have POV-Ray rebuild them in its
+  // left-handed frame. POV-Ray's ray through pixel (ix, iy) is direction +
+  // ((ix + 0.5) / W - 0.5) right + (0.5 - (iy + 0.5) / H) up, so right and up
+  // span the whole image plane: twice Prism's half-widths. The aspect ratio is
+  // POV-Ray's image size, so +W and +H act like Prism's --size.
+  void camera() {
+    const CameraSpec& c = scene_.camera;
+    const Vec3 forward = glm::normalize(c.lookat - c.eye);
+    const Vec3 right = glm::normalize(glm::cross(forward, c.up));
+    const Vec3 up = glm::cross(right, forward);
+    const double halfHeight = std::tan(glm::radians(c.fov) * 0.5);
+    out_ << "// Prism camera: eye " << vec(c.eye) << " lookat " << vec(c.lookat) << " up "
+         << vec(c.up) << " fov " << num(c.fov) << " (vertical)\n";
+    out_ << "camera {\n  perspective\n  location " << vec(c.eye) << "\n  direction " << vec(forward)
+         << "\n  right " << vec(right) << " * (" << num(2.0 * halfHeight)
+         << " * image_width / image_height)\n  up " << vec(up) << " * " << num(2.0 * halfHeight)
+         << "\n}\n";
+  }
+
+  void lights() {
+    const double fade = povFadeDistance(sceneSize(scene_));
+    const double scale = povLightScale(fade);
+    for (const Light& l : scene_.lights) {
+      out_ << "light_source { " << vec(l.position) << " color rgb " << vec(l.intensity * scale)
+           << " fade_distance " << num(fade) << " fade_power 2 }\n";
+    }
+  }
+
+  void materials() {
+    for (std::size_t i = 0; i < scene_.materials.size(); ++i) {
+      const PovMaterial m = povMaterialOf(scene_.materials[i]);
+      if (!m.exact)
+        out_ << "// " << materialName(std::uint32_t(i))
+             << " transmits everything: POV-Ray shows no diffuse light on it\n";
+      out_ << "#declare " << materialName(std::uint32_t(i)) << " = material {\n  texture {\n"
+           << "    pigment { rgbt <" << num(m.color.r) << ", " << num(m.color.g) << ", "
+           << num(m.color.b) << ", " << num(m.transmit) << "> }\n"
+           << "    finish { ambient " << num(m.ambient) << " diffuse " << num(m.diffuse)
+           << " specular " << num(m.specular);
+      if (m.specular > 0.0) out_ << " roughness " << num(m.roughness);
+      out_ << " reflection { " << num(m.reflection) << " } }\n  }\n";
+      if (m.transmit > 0.0) out_ << "  interior { ior " << num(m.ior) << " }\n";
+      out_ << "}\n";
+    }
+  }
+
+  // Every kind through one overload of `all`, so a kind added to ShapeKinds
+  // without a POV-Ray form here does not compile (rather than vanish from
+  // the converted scene).
+  void shapes() {
+    std::apply([&](const auto&... kinds) { (all(kinds), ...); }, scene_.storage.vectors);
+  }
+
+private:
+  static std::string material(std::uint32_t index) {
+    return "material { " + materialName(index) + " }";
+  }
+
+  template <class Kind> void all(const std::vector<Kind>& shapes) {
+    for (const Kind& shape : shapes)
+      one(shape);
+  }
+
+  void one(const Sphere& s) {
+    out_ << "sphere { " << vec(s.center) << ", " << num(s.radius) << " " << material(s.material)
+         << " }\n";
+  }
+
+  // The unit sphere, carried into place by the ellipsoid's map.
+  void one(const Ellipsoid& e) {
+    out_ << "sphere { <0, 0, 0>, 1 " << matrix(e.objectToWorld, e.center) << " "
+         << material(e.material) << " }\n";
+  }
+
+  // POV-Ray's polygon takes concave polygons as they are (it counts
+  // crossings, like Prism); the first vertex is repeated to close it.
+  void one(const Polygon& p) {
+    const Vec3* v = scene_.polygonVertices.data() + p.firstVertex;
+    out_ << "polygon { " << p.vertexCount + 1;
+    for (std::uint32_t i = 0; i < p.vertexCount; ++i)
+      out_ << ", " << vec(v[i]);
+    out_ << ", " << vec(v[0]) << " " << material(p.material) << " }\n";
+  }
+
+  // An open cone between its two circles; an elliptic one (the scene
+  // language allows any transform) as the unit-height cone of its own frame,
+  // carried into place by its matrix.
+  void one(const Cone& c) {
+    const Mat3& m = c.objectToWorld;
+    out_ << "cone { ";
+    if (isCircular(c)) {
+      const double unit = glm::length(m[0]);
+      out_ << vec(c.objectToWorldOffset) << ", " << num(c.baseRadius * unit) << ", "
+           << vec(c.objectToWorldOffset + m[2]) << ", " << num(c.apexRadius * unit) << " open ";
+    } else {
+      out_ << "<0, 0, 0>, " << num(c.baseRadius) << ", <0, 0, 1>, " << num(c.apexRadius) << " open "
+           << matrix(m, c.objectToWorldOffset) << " ";
+    }
+    out_ << material(c.material) << " }\n";
+  }
+
+  // Triangles as POV-Ray meshes: one per run of triangles of one material
+  // (a mesh has one material), which POV-Ray stores and bounds more cheaply
+  // than as many separate objects.
+  void all(const std::vector<Triangle>& triangles) {
+    for (std::size_t i = 0; i < triangles.size();) {
+      const std::uint32_t run = triangles[i].material;
+      out_ << "mesh {\n";
+      for (; i < triangles.size() && triangles[i].material == run; ++i)
+        triangle(triangles[i]);
+      out_ << "  " << material(run) << "\n}\n";
+    }
+  }
+
+  void triangle(const Triangle& t) {
+    out_ << (t.smooth() ? "  smooth_triangle { " : "  triangle { ");
+    for (std::size_t k = 0; k < 3; ++k) {
+      out_ << (k ? ", " : "") << vec(scene_.meshVertices[t.vertex[k]]);
+      if (t.smooth()) out_ << ", " << vec(scene_.meshNormals[t.normal[k]]);
+    }
+    out_ << " }\n";
+  }
+
+  std::ostream& out_;
+  const Scene& scene_;
+};
+
+} // namespace
+
+void writePov(std::ostream& out, const Scene& scene, const std::string& header) {
+  PovText text(out, scene);
+  text.header(header);
+  text.globals();
+  text.camera();
+  text.lights();
+  text.materials();
+  text.shapes();
+}
+
+void savePov(const std::filesystem::path& path, const Scene& scene, const std::string& header) {
+  writeFileAtomically(path, [&](std::ostream& out) { writePov(out, scene, header); });
+}
+
+} // namespace prism

@@ -1,6 +1,5 @@
 #include "chart.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,8 +12,6 @@ namespace {
 
 // Tolerance for "this value is a whole number of steps" against round-off.
 constexpr double kStepSlack = 1e-9;
-
-bool plottable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
 
 double toAxis(double v, bool log) { return log ? std::log10(v) : v; }
 

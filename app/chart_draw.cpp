@@ -16,9 +16,6 @@ namespace prism {
 
 namespace {
 
-// As in chart.cpp: a value that can be drawn on the axis.
-bool plottable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
-
 namespace IBA = OIIO::ImageBufAlgo;
 using Color = std::array<float, 3>;
 

@@ -6,7 +6,8 @@ set -euo pipefail
 packages=(
   g++ cmake make pkg-config       # toolchain
   libglm-dev                        # vector math
-  libopenimageio-dev openimageio-tools  # image files (and oiiotool for comparisons)
+  libtiff-dev libpng-dev            # 8-bit TIFF and PNG, written directly (core/io/image_io.cpp)
+  libopenimageio-dev openimageio-tools  # other image files, in the module libprism_oiio.so (and oiiotool for comparisons)
   fonts-dejavu-core                 # the text of `prism sweep`'s plots (OpenImageIO draws it)
   libcli11-dev                      # command-line parsing
   nlohmann-json3-dev                # statistics as JSON

@@ -26,6 +26,7 @@ struct BenchCommandOptions {
   std::size_t scalingMax = 1000000;
   std::string data;     // write the scaling series here (for gnuplot)
   bool latency = false; // measure the previewer's answer to a light move instead
+  bool startup = false; // measure the cost of starting prism instead
 };
 
 // Adds the `bench` subcommand and its options to `app`, filling `options`.

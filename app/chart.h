@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <span>
 #include <string>
 #include <utility>
@@ -50,6 +51,9 @@ std::string writeChartPng(const Chart& chart, const std::string& path, int width
                           int height = 600);
 
 // ---- The pure parts, for tests ----
+
+// Whether a value can be drawn on an axis: finite, and positive on a log axis.
+inline bool plottable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
 
 // The values shown on one axis, `lo` < `hi` in data units; `log` means the
 // axis is drawn in log10 of the values (then 0 < lo).

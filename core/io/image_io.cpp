@@ -1,8 +1,8 @@
 #include "core/io/image_io.h"
 
+#include "core/io/oiio_module.h"
 #include "core/io/pending_file.h"
-
-#include <OpenImageIO/imageio.h>
+#include "core/io/picture_formats.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -13,7 +13,6 @@ namespace prism {
 namespace {
 
 namespace fs = std::filesystem;
-using OIIO::TypeDesc;
 
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
@@ -22,29 +21,25 @@ std::string lowerExtension(const fs::path& path) {
   return ext;
 }
 
-void writeAtomically(const fs::path& path, int width, int height, TypeDesc type, const void* pixels,
-                     const std::string& description) {
-  PendingFile file(path);
-  auto fail = [&](const std::string& why) {
-    throw std::runtime_error("cannot write '" + path.string() + "': " + why);
-  };
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out) fail(OIIO::geterror().empty() ? "unknown image format" : OIIO::geterror());
-  OIIO::ImageSpec spec(width, height, 3, type);
-  spec.attribute("compression", "zip");
-  spec.attribute("Software", "Prism");
-  if (!description.empty()) spec.attribute("ImageDescription", description);
-  if (!out->open(file.tempPath().string(), spec)) fail(out->geterror());
-  if (!out->write_image(type, pixels)) {
-    const std::string why = out->geterror();
-    out->close();
-    fail(why);
-  }
-  if (!out->close()) fail(out->geterror());
-  file.commit();
+// The formats written here directly (libtiff, libpng) rather than through the
+// OpenImageIO module; the extensions OpenImageIO gives them.
+bool isTiff(const std::string& ext) { return ext == ".tif" || ext == ".tiff" || ext == ".tx"; }
+bool isPng(const std::string& ext) { return ext == ".png"; }
+
+void writeThroughModule(const fs::path& path, const fs::path& file, int width, int height,
+                        bool isFloat, const void* pixels, const std::string& description) {
+  auto write = reinterpret_cast<PrismOiioWriteFn>(oiioModuleSymbol("prism_oiio_write"));
+  char error[1024] = "";
+  if (!write(path.c_str(), file.c_str(), width, height, isFloat ? 1 : 0, pixels,
+             description.c_str(), error, sizeof error))
+    failWrite(path, error[0] ? error : "unknown error");
 }
 
 } // namespace
+
+void failWrite(const fs::path& target, const std::string& why) {
+  throw std::runtime_error("cannot write '" + target.string() + "': " + why);
+}
 
 void checkWritableFile(const fs::path& path) {
   auto fail = [&](const std::string& why) {
@@ -60,12 +55,13 @@ void checkWritableFile(const fs::path& path) {
 
 void checkWritable(const fs::path& path) {
   checkWritableFile(path);
-  if (!OIIO::ImageOutput::create(path.string())) {
-    OIIO::geterror(); // consume the message so it does not leak into a later error
+  const std::string ext = lowerExtension(path);
+  if (isTiff(ext) || isPng(ext)) return;
+  auto supports = reinterpret_cast<PrismOiioSupportsFn>(oiioModuleSymbol("prism_oiio_supports"));
+  if (!supports(path.c_str()))
     throw std::runtime_error("cannot write '" + path.string() +
                              "': no image format for the extension '" + path.extension().string() +
                              "'");
-  }
 }
 
 bool isFloatFormat(const fs::path& path) {
@@ -75,12 +71,22 @@ bool isFloatFormat(const fs::path& path) {
 
 void writeImage8(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgb,
                  const std::string& description) {
-  writeAtomically(path, width, height, TypeDesc::UINT8, rgb.data(), description);
+  const std::string ext = lowerExtension(path);
+  PendingFile file(path);
+  if (isTiff(ext))
+    writeTiff8(file.tempPath(), path, width, height, rgb.data(), description);
+  else if (isPng(ext))
+    writePng8(file.tempPath(), path, width, height, rgb.data(), description);
+  else
+    writeThroughModule(path, file.tempPath(), width, height, false, rgb.data(), description);
+  file.commit();
 }
 
 void writeImageFloat(const fs::path& path, int width, int height, const std::vector<Rgb>& radiance,
                      const std::string& description) {
-  writeAtomically(path, width, height, TypeDesc::FLOAT, radiance.data(), description);
+  PendingFile file(path);
+  writeThroughModule(path, file.tempPath(), width, height, true, radiance.data(), description);
+  file.commit();
 }
 
 } // namespace prism

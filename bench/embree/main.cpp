@@ -55,7 +55,7 @@ std::string contentsText(const Scene& scene) {
         ((vectors.empty()
               ? void(++k)
               : void(kinds += (kinds.empty() ? "" : ", ") + std::to_string(vectors.size()) + " " +
-                              ShapeKinds::names[k++] + "s")),
+                              ShapeKinds::names[k++] + (vectors.size() == 1 ? "" : "s"))),
          ...);
       },
       scene.storage.vectors);

@@ -24,7 +24,7 @@ struct Options {
   std::size_t rays = 0;
   std::uint64_t seed = 1;
   RTCBuildQuality quality = RTC_BUILD_QUALITY_HIGH;
-  SphereMode spheres = SphereMode::Native;
+  SphereMode spheres = SphereMode::User;
   std::string isa;
   TimingOptions timing;
   bool row = false;
@@ -143,7 +143,8 @@ int run(const Options& o) {
             << "." << rtcGetDeviceProperty(embree.device(), RTC_DEVICE_PROPERTY_VERSION_PATCH)
             << ": ISA " << isa.selected << " (compiled: " << isa.compiled
             << "; native packets: " << isa.nativePackets << "), build quality "
-            << qualityName(o.quality) << "\n"
+            << qualityName(o.quality) << ", spheres "
+            << (o.spheres == SphereMode::User ? "as user geometry" : "native") << "\n"
             << "Embree scene: " << c.meshTriangles << " mesh triangles, " << c.polygonTriangles
             << " triangles of polygons, " << c.nativeSpheres << " spheres (native), "
             << c.userPrimitives << " user primitives (Prism's tests); built in "
@@ -200,7 +201,7 @@ int main(int argc, char** argv) {
                                                       {"user", SphereMode::User}};
   app.add_option("--spheres", o.spheres,
                  "Spheres in Embree: its own sphere primitive, or user geometry calling "
-                 "Prism's test [native]")
+                 "Prism's test [user]")
       ->transform(CLI::CheckedTransformer(sphereModes, CLI::ignore_case));
   app.add_option("--isa", o.isa,
                  "Force Embree's ISA (its device configuration's isa=: sse2, sse4.2, avx, avx2, "

@@ -323,6 +323,18 @@ TEST(DocsLinks, NothingPointsAtTheSharedFolderOrTheSpecification) {
   }
 }
 
+TEST(DocsLinks, NoDocumentKeepsAMergeConflict) {
+  // A merge once left both sides of a conflict, markers and all, in
+  // docs/layout.md; links still resolved, so nothing else noticed.
+  for (const fs::path& doc : documents()) {
+    const std::vector<std::string> lines = linesOf(slurp(doc));
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      for (const char* marker : {"<<<<<<< ", ">>>>>>> ", "|||||||"})
+        EXPECT_NE(lines[i].rfind(marker, 0), 0u)
+            << fs::relative(doc, root()).string() << ":" << i + 1 << ": a conflict marker";
+  }
+}
+
 TEST(DocsLinks, TheReadmeLinksEveryDocument) {
   // README's "Where to read on" is how a newcomer finds the documents: one
   // that no README link reaches is as good as lost.

@@ -611,5 +611,18 @@ TEST(Bvh, AtMost64BytesPerPrimitive) {
   }
 }
 
+// keepNearest's next double up agrees with the C library's at every kind of value.
+TEST(KeepNearest, NextUpIsNextafterTowardInfinity) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  for (const double x : {0.0, -0.0, std::numeric_limits<double>::denorm_min(),
+                         -std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(),
+                         1.0, -1.0, 0.1, 1e300, -1e-300, std::numeric_limits<double>::max(),
+                         -std::numeric_limits<double>::max(), inf, -inf})
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(nextUp(x)),
+              std::bit_cast<std::uint64_t>(std::nextafter(x, inf)))
+        << x;
+  EXPECT_TRUE(std::isnan(nextUp(std::numeric_limits<double>::quiet_NaN())));
+}
+
 } // namespace
 } // namespace prism

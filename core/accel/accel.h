@@ -5,6 +5,7 @@
 
 #include "core/scene/scene.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -20,6 +21,15 @@ struct Hit {
   PrimitiveRef primitive;
 };
 
+// The next double above x (std::nextafter(x, +inf), which is a call into the
+// C library; this runs for every nearer hit found).
+inline double nextUp(double x) {
+  if (!(x < std::numeric_limits<double>::infinity())) return x; // +inf, NaN
+  if (x == 0.0) return std::numeric_limits<double>::denorm_min();
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
+}
+
 // Offers a candidate hit to the nearest one found so far (`found` says whether
 // there is one) and narrows `range` so later candidates must be at least as near.
 // Ties go to the smaller PrimitiveRef: the answer never depends on visiting order.
@@ -30,7 +40,7 @@ inline void keepNearest(const Hit& candidate, bool& found, Hit& nearest, Interva
     found = true;
   }
   // Still accept hits at exactly nearest.t, for the tie-break above.
-  range.max = std::nextafter(nearest.t, std::numeric_limits<double>::infinity());
+  range.max = nextUp(nearest.t);
 }
 
 // How rays find primitives. `Bvh` (the default) builds its own hierarchy with

@@ -65,12 +65,18 @@ TEST_P(PictureFormats, ReadBackExactlyWithTheirTexts) {
 INSTANTIATE_TEST_SUITE_P(TiffAndPng, PictureFormats, ::testing::Values(".tif", ".png"),
                          [](const auto& param) { return std::string(param.param + 1); });
 
-TEST(PictureFormats, PngHasOpenImageIOsBytes) {
-  const test::ScratchDir dir;
+// The same picture written by Prism (DIR/ours.EXT) and by OpenImageIO
+// (DIR/theirs.EXT).
+void writeBoth(const test::ScratchDir& dir, const std::string& ext) {
   const int w = 37, h = 70;
   const std::vector<std::uint8_t> rgb = testPattern(w, h);
-  writeImage8(dir / "ours.png", w, h, rgb, "exposed by avgmax 0.5");
-  writeWithOiio(dir / "theirs.png", w, h, rgb, "exposed by avgmax 0.5");
+  writeImage8(dir / ("ours" + ext), w, h, rgb, "exposed by avgmax 0.5");
+  writeWithOiio(dir / ("theirs" + ext), w, h, rgb, "exposed by avgmax 0.5");
+}
+
+TEST(PictureFormats, PngHasOpenImageIOsBytes) {
+  const test::ScratchDir dir;
+  writeBoth(dir, ".png");
   const std::string ours = test::slurp(dir / "ours.png");
   ASSERT_GT(ours.size(), 100u);
   EXPECT_TRUE(ours == test::slurp(dir / "theirs.png")) << "the files differ";
@@ -81,10 +87,7 @@ TEST(PictureFormats, PngHasOpenImageIOsBytes) {
 // but for the moment of writing.
 TEST(PictureFormats, TiffHasOpenImageIOsTags) {
   const test::ScratchDir dir;
-  const int w = 37, h = 70;
-  const std::vector<std::uint8_t> rgb = testPattern(w, h);
-  writeImage8(dir / "ours.tif", w, h, rgb, "exposed by avgmax 0.5");
-  writeWithOiio(dir / "theirs.tif", w, h, rgb, "exposed by avgmax 0.5");
+  writeBoth(dir, ".tif");
   const auto tags = [](const path& p) {
     auto in = OIIO::ImageInput::open(p.string());
     EXPECT_TRUE(in) << p;

@@ -218,10 +218,28 @@ public:
     return {int(std::lround((*w)["x"].get<double>() + fx * (*w)["w"].get<double>())),
             int(std::lround((*w)["y"].get<double>() + 0.5 * (*w)["h"].get<double>()))};
   }
+  // Presses `button` on widget `name` (at `fx` of its width) and holds it
+  // until the window shows the widget active: it saw the press there. A press
+  // it did not see there is released and given again at the widget's new
+  // place: in CI the first input after start-up was sometimes lost, and a
+  // press read from the dump just before the panel's layout changed (a light
+  // added by a reload) can land beside the widget. Returns where it pressed,
+  // or nothing.
+  std::optional<std::pair<int, int>> pressOn(const std::string& name, double fx,
+                                             int button = 1) const {
+    const std::string b = std::to_string(button);
+    for (int attempt = 0; attempt < 5; ++attempt) {
+      const auto [x, y] = at(name, fx);
+      if (x < 0 || !xdotool(display_, "mousemove " + std::to_string(x) + " " +
+                                          std::to_string(y) + " mousedown " + b))
+        return std::nullopt;
+      if (waitFor([&] { return active(name); }, 4.0)) return std::pair{x, y};
+      if (!xdotool(display_, "mouseup " + b)) return std::nullopt;
+    }
+    return std::nullopt;
+  }
   bool click(const std::string& name, double fx = 0.5) const {
-    const auto [x, y] = at(name, fx);
-    return x >= 0 && xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
-                                           " click 1");
+    return pressOn(name, fx) && xdotool(display_, "mouseup 1");
   }
   // A key held for 10 ms, as a quick tap is.
   bool tap(const std::string& keys) const {
@@ -230,29 +248,34 @@ public:
   // Presses `button` at (x, y), moves by (dx, dy), and releases it only once
   // `moved()` holds (or after 20 s): a loaded machine may render a frame
   // slower than the events arrive, and a release seen in the same frame as
-  // the last move would lose the drag. When `grabbed` is given the motion
-  // starts only once it holds (the window has seen the press): otherwise the
-  // press and the whole motion can fall into one frame, which then sees the
-  // button go down where the motion ended. Returns whether `moved()` held.
-  bool drag(int x, int y, int dx, int dy, const std::function<bool()>& moved, int button = 1,
-            const std::function<bool()>& grabbed = {}) const {
-    std::string steps;
+  // the last move would lose the drag. Returns whether `moved()` held.
+  bool drag(int x, int y, int dx, int dy, const std::function<bool()>& moved,
+            int button = 1) const {
+    return xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
+                                 " mousedown " + std::to_string(button)) &&
+           moveAndRelease(x, y, dx, dy, moved, button);
+  }
+  // Drags widget `name`, held at `fx` of its width, `dx` pixels sideways. The
+  // motion starts only once the window has seen the press (pressOn):
+  // otherwise the press and the whole motion can fall into one frame, which
+  // then sees the button go down where the motion ended.
+  bool dragWidget(const std::string& name, double fx, int dx,
+                  const std::function<bool()>& moved) const {
+    const std::optional<std::pair<int, int>> at = pressOn(name, fx);
+    return at && moveAndRelease(at->first, at->second, dx, 0, moved, 1);
+  }
+  // With `button` held at (x, y): moves by (dx, dy) in five steps, waits for
+  // `moved()`, releases, and waits until no widget is active (a dragged
+  // widget is released in a later frame: its value is final then).
+  bool moveAndRelease(int x, int y, int dx, int dy, const std::function<bool()>& moved,
+                      int button) const {
+    std::string steps = "sleep 0.05";
     for (int i = 1; i <= 5; ++i)
       steps += " mousemove " + std::to_string(x + dx * i / 5) + " " +
                std::to_string(y + dy * i / 5) + " sleep 0.03";
-    const std::string b = std::to_string(button);
-    const bool pressed = xdotool(display_, "mousemove " + std::to_string(x) + " " +
-                                               std::to_string(y) + " mousedown " + b) &&
-                         (!grabbed || waitFor(grabbed)) && xdotool(display_, "sleep 0.05" + steps);
-    const bool done = pressed && waitFor(moved);
-    // A dragged widget is released in a later frame: its value is final then.
-    return xdotool(display_, "mouseup " + b) && done && waitFor([&] { return !anyActive(); });
-  }
-  // Drags widget `name`, held at `fx` of its width, `dx` pixels sideways.
-  bool dragWidget(const std::string& name, double fx, int dx,
-                  const std::function<bool()>& moved) const {
-    const auto [x, y] = at(name, fx);
-    return drag(x, y, dx, 0, moved, 1, [&] { return active(name); });
+    const bool done = xdotool(display_, steps) && waitFor(moved);
+    return xdotool(display_, "mouseup " + std::to_string(button)) && done &&
+           waitFor([&] { return !anyActive(); });
   }
   // Waits for the program to end by itself.
   bool exits(double seconds) {
@@ -385,9 +408,8 @@ TEST_F(ViewInput, DragsSlidersAndThePicture) {
   ASSERT_TRUE(app_.click("Render/max depth", 0.95));
   EXPECT_TRUE(app_.waitFor([&] { return app_.value("Render/max depth") != "5"; }));
   const std::string light = app_.value("Lights/light 1/light 1");
-  const auto [lx, ly] = app_.at("Lights/light 1/light 1", 0.16);
-  EXPECT_TRUE(
-      app_.drag(lx, ly, 80, 0, [&] { return app_.value("Lights/light 1/light 1") != light; }));
+  EXPECT_TRUE(app_.dragWidget("Lights/light 1/light 1", 0.16, 80,
+                              [&] { return app_.value("Lights/light 1/light 1") != light; }));
   // Orbit: a drag on the picture moves the eye, not lookat.
   const std::string eye = app_.value("Camera/eye"), lookat = app_.value("Camera/lookat");
   EXPECT_TRUE(app_.drag(160, 120, 60, 20, [&] { return app_.value("Camera/eye") != eye; }));
@@ -412,9 +434,8 @@ TEST_F(ViewInput, DragsSlidersAndThePicture) {
 // file's values.
 TEST_F(ViewInput, UndoRedoAndResets) {
   const std::string light = app_.value("Lights/light 1/light 1");
-  const auto [lx, ly] = app_.at("Lights/light 1/light 1", 0.16);
-  ASSERT_TRUE(
-      app_.drag(lx, ly, 80, 0, [&] { return app_.value("Lights/light 1/light 1") != light; }));
+  ASSERT_TRUE(app_.dragWidget("Lights/light 1/light 1", 0.16, 80,
+                              [&] { return app_.value("Lights/light 1/light 1") != light; }));
   const std::string moved = app_.value("Lights/light 1/light 1");
   ASSERT_TRUE(app_.tap("ctrl+z")); // the whole drag, in one step
   EXPECT_TRUE(app_.waitForValue("Lights/light 1/light 1", light));

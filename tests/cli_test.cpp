@@ -12,6 +12,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using prism::test::leakCheckerCrashed;
 using prism::test::quoted;
 using prism::test::runCaptured;
 using prism::test::RunResult;
@@ -384,6 +385,20 @@ TEST_F(Cli, TreeGeneratorReproducesTheCommittedTree) {
     EXPECT_FALSE(generated.empty());
     EXPECT_EQ(generated, slurp(scene(file)));
   }
+}
+
+// The one failure a child process is run again for: the leak checker's own
+// crash, alone; never a leak or a sanitizer's error report.
+TEST(ChildProcesses, OnlyTheLeakCheckersOwnCrashIsRunAgain) {
+  const std::string crash = "Tracer caught signal 11: addr=0x17e8 pc=0x7f sp=0x7f\n"
+                            "==944==LeakSanitizer has encountered a fatal error.\n";
+  EXPECT_TRUE(leakCheckerCrashed({134, "", "frames while rendering: 1\n" + crash}));
+  EXPECT_FALSE(leakCheckerCrashed({134, "", "==9==ERROR: LeakSanitizer: detected memory leaks\n" +
+                                                crash}));
+  EXPECT_FALSE(leakCheckerCrashed({1, "", "==9==ERROR: AddressSanitizer: heap-use-after-free\n" +
+                                             crash}));
+  EXPECT_FALSE(leakCheckerCrashed({134, "", "Tracer caught signal 11\n"}));
+  EXPECT_FALSE(leakCheckerCrashed({2, "", "a.sc:1:1: error: unknown command\n"}));
 }
 
 } // namespace

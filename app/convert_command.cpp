@@ -3,6 +3,7 @@
 #include "load_scene.h"
 #include "render_command.h"
 
+#include "core/io/file_extension.h"
 #include "core/io/image_io.h"
 #include "core/io/pov_writer.h"
 #include "core/io/scene_loader.h"
@@ -10,8 +11,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cctype>
-#include <filesystem>
 #include <iostream>
 
 namespace prism {
@@ -20,12 +19,7 @@ namespace {
 
 // The output's format, by its extension: .pov is POV-Ray's, anything else
 // Prism's own .sc (an .nff or .obj name is refused: Prism does not write those).
-bool writesPov(const std::string& output) {
-  std::string ext = std::filesystem::path(output).extension().string();
-  for (char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".pov";
-}
+bool writesPov(const std::string& output) { return lowerExtension(output) == ".pov"; }
 
 } // namespace
 
@@ -61,16 +55,7 @@ int runConvertCommand(const ConvertCommandOptions& o) {
       }))
     return kExitFailure;
   if (!o.quiet) {
-    // The count of every kind, from the list of kinds ("2 spheres, 1 cone").
-    std::string kinds;
-    std::apply(
-        [&]<class... Kinds>(const std::vector<Kinds>&... all) {
-          ((kinds += all.empty() ? ""
-                                 : (kinds.empty() ? "" : ", ") + std::to_string(all.size()) + " " +
-                                       Kinds::kName + (all.size() == 1 ? "" : "s")),
-           ...);
-        },
-        scene.storage.vectors);
+    const std::string kinds = scene.kindCounts();
     std::cerr << "wrote " << o.output << ": " << scene.primitiveCount() << " primitives"
               << (kinds.empty() ? "" : " (" + kinds + ")") << ", " << scene.lights.size()
               << " lights, " << scene.materials.size() << " materials\n";

@@ -48,18 +48,7 @@ const char* qualityName(RTCBuildQuality q) {
 
 // "tree.sc: 105476 primitives (105476 polygons)"
 std::string contentsText(const Scene& scene) {
-  std::string kinds;
-  std::size_t k = 0;
-  std::apply(
-      [&](const auto&... vectors) {
-        ((vectors.empty()
-              ? void(++k)
-              : void(kinds += (kinds.empty() ? "" : ", ") + std::to_string(vectors.size()) + " " +
-                              ShapeKinds::names[k++] + (vectors.size() == 1 ? "" : "s"))),
-         ...);
-      },
-      scene.storage.vectors);
-  return std::to_string(scene.primitiveCount()) + " primitives (" + kinds + ")";
+  return std::to_string(scene.primitiveCount()) + " primitives (" + scene.kindCounts() + ")";
 }
 
 void printResults(const std::vector<SetResult>& results) {

@@ -1,10 +1,10 @@
 #include "core/io/image_io.h"
 
+#include "core/io/file_extension.h"
 #include "core/io/oiio_module.h"
 #include "core/io/pending_file.h"
 #include "core/io/picture_formats.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -13,13 +13,6 @@ namespace prism {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lowerExtension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // The formats written here directly (libtiff, libpng) rather than through the
 // OpenImageIO module; the extensions OpenImageIO gives them.
@@ -42,9 +35,7 @@ void failWrite(const fs::path& target, const std::string& why) {
 }
 
 void checkWritableFile(const fs::path& path) {
-  auto fail = [&](const std::string& why) {
-    throw std::runtime_error("cannot write '" + path.string() + "': " + why);
-  };
+  auto fail = [&](const std::string& why) { failWrite(path, why); };
   if (path.filename().empty()) fail("not a file name");
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code error;
@@ -59,9 +50,7 @@ void checkWritable(const fs::path& path) {
   if (isTiff(ext) || isPng(ext)) return;
   auto supports = reinterpret_cast<PrismOiioSupportsFn>(oiioModuleSymbol("prism_oiio_supports"));
   if (!supports(path.c_str()))
-    throw std::runtime_error("cannot write '" + path.string() +
-                             "': no image format for the extension '" + path.extension().string() +
-                             "'");
+    failWrite(path, "no image format for the extension '" + path.extension().string() + "'");
 }
 
 bool isFloatFormat(const fs::path& path) {

@@ -1,16 +1,13 @@
 #include "core/io/scene_loader.h"
 
+#include "core/io/file_extension.h"
 #include "core/io/nff_reader.h"
 #include "core/io/obj_reader.h"
-
-#include <cctype>
 
 namespace prism {
 
 SceneFormat sceneFormatOf(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(path);
   if (ext == ".nff") return SceneFormat::Nff;
   if (ext == ".obj") return SceneFormat::Obj;
   return SceneFormat::Sc;

@@ -34,12 +34,12 @@ void tiffErrorHandler(const char* module, const char* format, va_list args) {
   tiffMessage = module ? std::string(module) + ": " + text : std::string(text);
 }
 
+} // namespace
+
 // 8-bit RGB TIFF with the tags and values OpenImageIO 2.4 gives it (zip
 // compression with the horizontal predictor, 32 rows per strip), so a file
 // reads as it did from earlier builds; the strips are compressed alike, but
 // the directory comes after them (OpenImageIO writes it first and rewrites it).
-} // namespace
-
 void writeTiff8(const fs::path& file, const fs::path& target, int width, int height,
                 const std::uint8_t* rgb, const std::string& description) {
   TIFFSetErrorHandler(tiffErrorHandler);
@@ -73,7 +73,7 @@ void writeTiff8(const fs::path& file, const fs::path& target, int width, int hei
     strip.assign(rgb + rowBytes * y, rgb + rowBytes * (y + rows));
     for (int r = 0; r < rows; ++r) { // horizontal differencing, right to left
       std::uint8_t* row = strip.data() + rowBytes * r;
-      for (std::size_t i = rowBytes - 1; i >= 3; --i)
+      for (std::size_t i = rowBytes; i-- > 3;)
         row[i] = std::uint8_t(row[i] - row[i - 3]);
     }
     uLongf packedSize = compressBound(uLong(strip.size()));

@@ -17,6 +17,19 @@ Origin Scene::origin(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.origin; });
 }
 
+std::string Scene::kindCounts() const {
+  std::string kinds;
+  std::apply(
+      [&]<class... Kinds>(const std::vector<Kinds>&... all) {
+        ((kinds += all.empty() ? ""
+                               : (kinds.empty() ? "" : ", ") + std::to_string(all.size()) + " " +
+                                     Kinds::kName + (all.size() == 1 ? "" : "s")),
+         ...);
+      },
+      storage.vectors);
+  return kinds;
+}
+
 std::string Scene::describe(PrimitiveRef ref) const {
   std::ostringstream text;
   text << kindName(ref.kind) << " #" << ref.index;

@@ -80,6 +80,9 @@ struct Scene {
   }
   // "sphere #3 (table.sc:12)" and the like, for diagnostics and the ray tree.
   std::string describe(PrimitiveRef ref) const;
+  // The count of every kind the scene has, "2 spheres, 1 cone" ("" if none),
+  // for summaries.
+  std::string kindCounts() const;
   // Every primitive, in the order of the kinds, for brute-force queries.
   std::vector<PrimitiveRef> allPrimitives() const;
 

@@ -213,6 +213,30 @@ TEST(Highlight, ExponentZeroGivesIntensityOverDistanceSquared) {
   expectColorNear(tr.radiance, light / 8.0);
 }
 
+// The highlight's power: whole exponents by repeated squaring, within a few
+// ulps of the exact power (long double's powl as the reference); exact where
+// the products are; other exponents exactly std::pow.
+TEST(Highlight, PowerOfTheCosine) {
+  EXPECT_EQ(powNonNegative(0.5, 60.0), std::ldexp(1.0, -60));
+  EXPECT_EQ(powNonNegative(0.75, 3.0), 0.421875); // 27/64, exact in binary
+  EXPECT_EQ(powNonNegative(0.3, 1.0), 0.3);
+  EXPECT_EQ(powNonNegative(0.3, 0.0), 1.0);
+  EXPECT_EQ(powNonNegative(0.0, 0.0), 1.0); // as std::pow: 0^0 = 1
+  EXPECT_EQ(powNonNegative(0.0, 7.0), 0.0);
+  EXPECT_EQ(powNonNegative(1.0, 1024.0), 1.0);
+  EXPECT_EQ(powNonNegative(1e-10, 900.0), 0.0); // underflows, no NaN
+  for (const double e : {2.5, 0.1, 1025.0, 1e6})
+    for (const double x : {0.0, 0.2, 0.9, 1.0})
+      EXPECT_EQ(powNonNegative(x, e), std::pow(x, e)) << x << "^" << e;
+  for (int e = 0; e <= 1024; e += 7)
+    for (double x = 0.05; x <= 1.0; x += 0.0625) {
+      const long double exact = powl((long double)x, (long double)e);
+      if (exact < 1e-290L) continue; // subnormal results: absolute error only
+      EXPECT_LE(std::abs((long double)powNonNegative(x, e) / exact - 1.0L), 1e-13L)
+          << x << "^" << e;
+    }
+}
+
 TEST(Highlight, LightBehindSurfaceGivesNothingAndNoShadowRay) {
   for (double e : {0.0, 1.0, 20.0}) {
     Scene scene = floorScene(makeMaterial(Color(1.0), 0.7, 1.0, 0.0, e));

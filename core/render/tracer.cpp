@@ -240,7 +240,7 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
         const Vec3 halfway = l - ray.dir;
         const double length = glm::length(halfway);
         const double cosH = length > 0.0 ? glm::dot(at.n, halfway / length) : 0.0;
-        term.specular = light.intensity * (std::pow(std::max(cosH, 0.0), m.e) * invR2);
+        term.specular = light.intensity * (powNonNegative(std::max(cosH, 0.0), m.e) * invR2);
         diffuse += term.diffuse;
         specular += term.specular;
       }

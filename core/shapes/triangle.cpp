@@ -107,42 +107,66 @@ bool barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n, con
 
 } // namespace
 
-Vec3 interpolatedNormal(const Triangle& tri, const Vec3* vertices, const Vec3* normals,
-                        const Vec3& point) {
-  const Vec3& a = vertices[tri.vertex[0]];
-  const Vec3& b = vertices[tri.vertex[1]];
-  const Vec3& c = vertices[tri.vertex[2]];
-  const Vec3 n = glm::cross(b - a, c - a);
-  const Vec3 unit = glm::normalize(n);
+namespace {
+
+// What the shading of a point on a triangle needs of it, computed once: the
+// vertices, the unnormalised normal by the right-hand rule and, where they
+// exist, the point's barycentric weights.
+struct TrianglePoint {
+  const Vec3* v[3];
+  Vec3 n;
   double w[3];
-  if (!tri.smooth() || !barycentric(a, b, c, n, point, w)) return unit;
-  const Vec3 blend =
-      w[0] * normals[tri.normal[0]] + w[1] * normals[tri.normal[1]] + w[2] * normals[tri.normal[2]];
+  bool weighted;
+
+  TrianglePoint(const Triangle& tri, const Vec3* vertices, const Vec3& point)
+      : v{&vertices[tri.vertex[0]], &vertices[tri.vertex[1]], &vertices[tri.vertex[2]]},
+        n(glm::cross(*v[1] - *v[0], *v[2] - *v[0])),
+        weighted(barycentric(*v[0], *v[1], *v[2], n, point, w)) {}
+};
+
+// The vertex normals blended by the weights, normalised; `unit` (the
+// geometric normal) where there are no weights or the blend vanishes.
+Vec3 blendedNormal(const Triangle& tri, const TrianglePoint& p, const Vec3* normals,
+                   const Vec3& unit) {
+  if (!p.weighted) return unit;
+  const Vec3 blend = p.w[0] * normals[tri.normal[0]] + p.w[1] * normals[tri.normal[1]] +
+                     p.w[2] * normals[tri.normal[2]];
   const double length = glm::length(blend);
   return length > 1e-12 ? blend / length : unit;
 }
 
-Vec3 liftedPoint(const Triangle& tri, const Vec3* vertices, const Vec3* normals,
-                 const Vec3& point) {
-  if (!tri.smooth()) return point;
-  const Vec3* v[3] = {&vertices[tri.vertex[0]], &vertices[tri.vertex[1]], &vertices[tri.vertex[2]]};
-  const Vec3 n = glm::cross(*v[1] - *v[0], *v[2] - *v[0]);
-  double w[3];
-  if (!barycentric(*v[0], *v[1], *v[2], n, point, w)) return point;
+// See liftedPoint.
+Vec3 lift(const Triangle& tri, const TrianglePoint& p, const Vec3* normals, const Vec3& point) {
+  if (!p.weighted) return point;
   Vec3 lifted(0.0);
   for (int i = 0; i < 3; ++i) {
     const Vec3& ni = normals[tri.normal[std::size_t(i)]];
     // The point raised onto vertex i's tangent plane when it lies below it;
     // never lowered (at a concave vertex the plane is below the face).
-    const double below = std::min(0.0, glm::dot(point - *v[i], ni));
-    lifted += w[i] * (point - below * ni);
+    const double below = std::min(0.0, glm::dot(point - *p.v[i], ni));
+    lifted += p.w[i] * (point - below * ni);
   }
   // Outward is the side the vertex normals point to.
   const Vec3 outward =
-      glm::dot(n, normals[tri.normal[0]] + normals[tri.normal[1]] + normals[tri.normal[2]]) >= 0.0
-          ? n
-          : -n;
+      glm::dot(p.n, normals[tri.normal[0]] + normals[tri.normal[1]] + normals[tri.normal[2]]) >= 0.0
+          ? p.n
+          : -p.n;
   return isFinite(lifted) && glm::dot(lifted - point, outward) > 0.0 ? lifted : point;
+}
+
+} // namespace
+
+Vec3 interpolatedNormal(const Triangle& tri, const Vec3* vertices, const Vec3* normals,
+                        const Vec3& point) {
+  if (!tri.smooth()) return geometricNormal(tri, vertices);
+  const TrianglePoint p(tri, vertices, point);
+  return blendedNormal(tri, p, normals, glm::normalize(p.n));
+}
+
+Vec3 liftedPoint(const Triangle& tri, const Vec3* vertices, const Vec3* normals,
+                 const Vec3& point) {
+  if (!tri.smooth()) return point;
+  return lift(tri, TrianglePoint(tri, vertices, point), normals, point);
 }
 
 Aabb boundsOf(const Triangle& tri, const Vec3* vertices) {
@@ -160,9 +184,12 @@ SurfacePoint surfaceAt(const Triangle& tri, const ShapeArrays& arrays, const Vec
   s.shading = s.outward;
   s.roundoffScale = roundoffScale(tri, arrays);
   if (!tri.smooth()) return s;
+  // One set of weights for both (each of the two functions alone would
+  // compute its own).
   const Vec3* normals = arrays.meshNormals.data();
-  s.shading = interpolatedNormal(tri, vertices, normals, point);
-  s.outwardStart = liftedPoint(tri, vertices, normals, point);
+  const TrianglePoint p(tri, vertices, point);
+  s.shading = blendedNormal(tri, p, normals, s.outward);
+  s.outwardStart = lift(tri, p, normals, point);
   return s;
 }
 

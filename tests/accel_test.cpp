@@ -25,6 +25,7 @@ namespace {
 
 using test::addEllipsoid;
 using test::addGroup;
+using test::addIn;
 using test::addMaterial;
 using test::addPolygon;
 using test::addSphere;
@@ -213,6 +214,64 @@ TEST(Accel, EveryModeMatchesBruteForceOnRandomRays) {
   EXPECT_GT(tally.hits, 3000);
   EXPECT_GT(surfaceStarts, 2000);
   EXPECT_GT(tally.ties, 10); // the duplicates were really exercised
+}
+
+// Jacks: thin bars lying every way (cones the BVH bounds slice by slice, see
+// core/accel/primitive_boxes.h), balls on their ends, some bars twice (ties).
+// Rays aimed at the bars, leaving their surfaces, and grazing them.
+TEST(Accel, SlicedConesMatchBruteForce) {
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  Tally tally;
+  for (int sceneIndex = 0; sceneIndex < 6; ++sceneIndex) {
+    Scene scene;
+    const std::uint32_t mat = addMaterial(scene, Material{});
+    for (int i = 0; i < 60 + 30 * sceneIndex; ++i) {
+      const Vec3 c(6 * u(rng), 6 * u(rng), 6 * u(rng));
+      const Vec3 half = (0.5 + 1.5 * unit(rng)) * randomUnit(rng);
+      const double r = 0.02 + 0.08 * unit(rng), apexR = i % 4 == 0 ? 0.0 : r;
+      for (int copy = 0; copy < (i % 7 == 0 ? 2 : 1); ++copy)
+        addIn(scene, 0, [&](SceneBuilder& build) {
+          Cone cone = makeCone(c - half, r, c + half, apexR);
+          cone.material = mat;
+          return build.add(cone);
+        });
+      addSphere(scene, c - half, 2 * r, mat);
+      addSphere(scene, c + half, 2 * r, mat);
+    }
+    // Also the BVH that keeps the slices whatever memory they take, so they
+    // are really there (several references to one cone).
+    auto accels = accelerated(scene);
+    accels.push_back(std::make_unique<Bvh>(scene, Bvh::Options{0}));
+    EXPECT_GT(static_cast<const Bvh&>(*accels.back()).referenceCount(), scene.primitiveCount());
+    const auto brute = makeAccel(scene, AccelKind::None);
+    const std::vector<Cone>& cones = scene.shapes<Cone>();
+    std::uniform_int_distribution<std::size_t> pick(0, cones.size() - 1);
+    for (int i = 0; i < 600; ++i) {
+      const Cone& target = cones[pick(rng)];
+      // A point of the target's axis, and one on its side (in its frame: the
+      // radius at that height along the frame's x axis).
+      const double z = unit(rng);
+      const Vec3 onAxis = target.objectToWorldOffset + z * target.objectToWorld[2];
+      const double radius = (1 - z) * target.baseRadius + z * target.apexRadius;
+      const Vec3 side = onAxis + radius * target.objectToWorld[0];
+      const Vec3 from(10 * u(rng), 10 * u(rng), 10 * u(rng));
+      const Vec3 aim = i % 3 == 0 ? side : onAxis;
+      if (aim == from) continue;
+      Hit h;
+      const Ray ray{from, glm::normalize(aim - from)};
+      if (expectSameHit(scene, accels, *brute, ray, Interval{}, nullptr, tally, &h))
+        expectSameHit(scene, accels, *brute, Ray{ray.at(h.t), randomDirection(rng)}, Interval{},
+                      nullptr, tally);
+      // Along the side, tangent to it: the frame's y axis at that point.
+      const Vec3 along = glm::normalize(target.objectToWorld[1]);
+      expectSameHit(scene, accels, *brute, Ray{side - 5.0 * along, along}, Interval{}, nullptr,
+                    tally);
+    }
+  }
+  EXPECT_GT(tally.queries, 5000);
+  EXPECT_GT(tally.hits, 2500);
+  EXPECT_GT(tally.ties, 10); // the doubled bars
 }
 
 TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {
@@ -618,10 +677,11 @@ TEST(Bvh, AtMost64BytesPerPrimitive) {
 // keepNearest's next double up agrees with the C library's at every kind of value.
 TEST(KeepNearest, NextUpIsNextafterTowardInfinity) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  for (const double x : {0.0, -0.0, std::numeric_limits<double>::denorm_min(),
-                         -std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(),
-                         1.0, -1.0, 0.1, 1e300, -1e-300, std::numeric_limits<double>::max(),
-                         -std::numeric_limits<double>::max(), inf, -inf})
+  for (const double x :
+       {0.0, -0.0, std::numeric_limits<double>::denorm_min(),
+        -std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(), 1.0, -1.0,
+        0.1, 1e300, -1e-300, std::numeric_limits<double>::max(),
+        -std::numeric_limits<double>::max(), inf, -inf})
     EXPECT_EQ(std::bit_cast<std::uint64_t>(nextUp(x)),
               std::bit_cast<std::uint64_t>(std::nextafter(x, inf)))
         << x;

@@ -1,5 +1,6 @@
 #include "core/accel/bvh.h"
 
+#include "core/accel/primitive_boxes.h"
 #include "core/accel/sah_builder.h"
 
 #include <algorithm>
@@ -201,27 +202,52 @@ double halfArea(const Aabb& b) {
 
 struct Bvh::BuildContext {
   const SahTree& tree;
+  const std::vector<BoxedPrimitive>& boxed;
 };
 
-Bvh::Bvh(const Scene& scene) : scene_(scene) {
-  const std::vector<PrimitiveRef> prims = scene.allPrimitives();
-  if (prims.empty()) return;
-  if (prims.size() > kFirstMask) throw std::length_error("too many primitives for the BVH");
+Bvh::Bvh(const Scene& scene, Options options) : scene_(scene) {
+  const std::size_t primitiveCount = scene.primitiveCount();
+  if (primitiveCount == 0) return;
+  if (primitiveCount > kFirstMask) throw std::length_error("too many primitives for the BVH");
+  // Slices of long cones (primitive_boxes.h): at most half as many again as
+  // there are primitives, and within the memory bound (see Options).
+  build(hierarchyBoxes(scene, std::min(primitiveCount / 2, kFirstMask - primitiveCount)));
+  if (options.maxBytesPerPrimitive > 0 && referenceCount() > primitiveCount &&
+      memoryBytes() > options.maxBytesPerPrimitive * primitiveCount) {
+    nodes_.clear();
+    refs_.clear();
+    depth_ = 0;
+    build(hierarchyBoxes(scene, 0));
+  }
+}
+
+void Bvh::build(const std::vector<BoxedPrimitive>& boxed) {
   std::vector<Aabb> boxes;
-  boxes.reserve(prims.size());
-  for (const PrimitiveRef& p : prims)
-    boxes.push_back(scene.bounds(p));
+  boxes.reserve(boxed.size());
+  for (const BoxedPrimitive& b : boxed)
+    boxes.push_back(b.box);
   SahOptions options;
   options.maxLeaf = std::min<std::uint32_t>(options.maxLeaf, kMaxLeaf);
   const SahTree tree = buildSahTree(boxes, options);
 
-  refs_.reserve(prims.size());
-  for (std::uint32_t i : tree.order)
-    refs_.push_back(std::uint32_t(prims[i].kind) << kKindShift | prims[i].index);
+  refs_.reserve(boxed.size());
   // A 4-wide tree has about a third as many nodes as the binary one has leaves.
   nodes_.reserve(tree.nodes.size() / 6 + 1);
-  BuildContext context{tree};
+  BuildContext context{tree, boxed};
   collapse(context, 0, 1);
+}
+
+// Appends binary leaf `n`'s primitives to refs_, each once (two slices of one
+// cone may share a leaf), and returns the child reference that names them.
+std::uint32_t Bvh::emitLeaf(const BuildContext& context, const SahTree::Node& n) {
+  const auto first = std::uint32_t(refs_.size());
+  for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+    const PrimitiveRef p = context.boxed[context.tree.order[i]].primitive;
+    const std::uint32_t code = std::uint32_t(p.kind) << kKindShift | p.index;
+    if (std::find(refs_.begin() + first, refs_.end(), code) == refs_.end()) refs_.push_back(code);
+  }
+  const auto count = std::uint32_t(refs_.size()) - first;
+  return kLeafBit | (count - 1) << kCountShift | first;
 }
 
 // Makes the node for binary node `b` and its descendants: the node's children
@@ -274,8 +300,7 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
       node.bounds[2 * axis][i] = roundDown(box.lo[axis]);
       node.bounds[2 * axis + 1][i] = roundUp(box.hi[axis]);
     }
-    node.child[i] = n.leaf() ? kLeafBit | (n.count - 1) << kCountShift | n.first
-                             : collapse(context, kids[i], depth + 1);
+    node.child[i] = n.leaf() ? emitLeaf(context, n) : collapse(context, kids[i], depth + 1);
   }
   nodes_[index] = node;
   return index;

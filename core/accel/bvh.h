@@ -1,6 +1,7 @@
 // The default acceleration structure: a bounding-volume hierarchy built with the
-// surface area heuristic (core/accel/sah_builder.h) over every primitive, ignoring the
-// push/pop groups, and collapsed into 4-wide nodes. A node stores its four
+// surface area heuristic (core/accel/sah_builder.h) over every primitive (a long
+// thin cone by slices, core/accel/primitive_boxes.h), ignoring the push/pop
+// groups, and collapsed into 4-wide nodes. A node stores its four
 // children's boxes side by side in single precision, rounded outward, and the
 // four are tested at once in double precision: a box is never missed where the
 // double-precision test on the exact box would hit it, so the nearest hit is
@@ -8,6 +9,8 @@
 // skipped once they start beyond the nearest hit found.
 #pragma once
 
+#include "core/accel/primitive_boxes.h"
+#include "core/accel/sah_builder.h"
 #include "core/accel/traversal_accel.h"
 
 #include <cstdint>
@@ -22,7 +25,15 @@ bool walksTogether(std::span<const Ray> rays);
 
 class Bvh final : public TraversalAccel<Bvh> {
 public:
-  explicit Bvh(const Scene& scene);
+  // Slices of long cones are kept only while the hierarchy (nodes and
+  // references, memoryBytes()) takes at most this much per primitive; where
+  // they would take more (a scene of thin twigs, or nothing but bars) the
+  // hierarchy of one box per primitive is built instead. 0: no bound (tests).
+  struct Options {
+    std::size_t maxBytesPerPrimitive = 64;
+  };
+  explicit Bvh(const Scene& scene) : Bvh(scene, Options{}) {}
+  Bvh(const Scene& scene, Options options);
 
   // Eye rays through neighbouring pixels walk the tree together (see
   // core/accel/bvh.cpp); a bundle that does not start at one point, or whose
@@ -32,6 +43,9 @@ public:
 
   std::size_t nodeCount() const { return nodes_.size(); }
   int depth() const { return depth_; }
+  // Primitive references in the leaves: the primitive count, plus the extra
+  // slices of long cones (core/accel/primitive_boxes.h).
+  std::size_t referenceCount() const { return refs_.size(); }
 
   // 4 children a node; 64-byte aligned, so a node is two cache lines.
   struct alignas(64) Node {
@@ -51,7 +65,9 @@ public:
 private:
   friend class TraversalAccel<Bvh>;
   struct BuildContext;
+  void build(const std::vector<BoxedPrimitive>& boxed);
   std::uint32_t collapse(BuildContext& context, std::uint32_t binaryNode, int depth);
+  std::uint32_t emitLeaf(const BuildContext& context, const SahTree::Node& leaf);
 
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;

@@ -54,18 +54,28 @@ Cone makeCone(const Vec3& base, double baseRadius, const Vec3& apex, double apex
   c.apexRadius = apexRadius;
   c.roundoff = frameRoundoffScale(c.objectToWorld, c.worldToObject, c.objectToWorldOffset,
                                   std::max({1.0, baseRadius, apexRadius}));
-  // Each end is an ellipse: centre m, semi-axes r X and r Y (the frame's x and
-  // y axes); along world axis i it reaches r sqrt(X_i^2 + Y_i^2) from m.
+  c.bounds = sliceBounds(c, 0.0, 1.0);
+  return c;
+}
+
+Aabb sliceBounds(const Cone& c, double z0, double z1) {
+  // The slice is the convex hull of its two end ellipses, so their boxes'
+  // union bounds it. An ellipse at height z has centre m, semi-axes r X and
+  // r Y (the frame's x and y axes); along world axis i it reaches
+  // r sqrt(X_i^2 + Y_i^2) from m.
   const Mat3& m = c.objectToWorld;
   const Vec3 spread(std::hypot(m[0].x, m[1].x), std::hypot(m[0].y, m[1].y),
                     std::hypot(m[0].z, m[1].z));
-  const Vec3 ends[2] = {c.objectToWorldOffset, c.objectToWorldOffset + m[2]};
-  const double radii[2] = {baseRadius, apexRadius};
-  for (int i = 0; i < 2; ++i) {
-    c.bounds.extend(ends[i] - radii[i] * spread);
-    c.bounds.extend(ends[i] + radii[i] * spread);
+  Aabb box;
+  for (const double z : {z0, z1}) {
+    // Both forms are exact at z = 0 and z = 1: the ends are the base and apex
+    // circles themselves there.
+    const Vec3 centre = c.objectToWorldOffset + z * m[2];
+    const double radius = (1.0 - z) * c.baseRadius + z * c.apexRadius;
+    box.extend(centre - radius * spread);
+    box.extend(centre + radius * spread);
   }
-  return c;
+  return box;
 }
 
 bool intersect(const Cone& c, const Ray& ray, Interval range, double& t) {

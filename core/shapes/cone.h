@@ -64,6 +64,12 @@ Vec2 uvAt(const Cone& c, const Vec3& point);
 
 inline Aabb boundsOf(const Cone& c) { return c.bounds; }
 
+// A box around the part of the cone between heights z0 and z1 of its frame
+// (0 <= z0 <= z1 <= 1): sliceBounds(c, 0, 1) is c.bounds. A long thin cone
+// lying across the axes fills little of its box; the hierarchy bounds it
+// slice by slice (core/accel/primitive_boxes.h).
+Aabb sliceBounds(const Cone& c, double z0, double z1);
+
 // True when the cross-sections are circles in the world (the frame's x and y
 // axes orthogonal, of equal length, and perpendicular to the axis), so the
 // cone can be written as base, radius, apex, radius.

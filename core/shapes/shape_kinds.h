@@ -30,6 +30,7 @@
 #include "core/shapes/roundoff.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
+#include "core/shapes/torus.h"
 #include "core/shapes/triangle.h"
 
 #include <array>
@@ -40,7 +41,7 @@
 
 namespace prism {
 
-// Kinds that need none of the scene's arrays (spheres, ellipsoids, cones)
+// Kinds that need none of the scene's arrays (spheres, ellipsoids, cones, tori)
 // provide intersect(shape, ray, range, t), normalAt(shape, point),
 // uvAt(shape, point) and boundsOf(shape); these give them the interface.
 template <class K>
@@ -89,7 +90,7 @@ template <ShapeKind... Kinds> struct ShapeList {
   static constexpr std::array<bool, size> flat{Kinds::kFlat...};
 };
 
-using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle>;
+using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

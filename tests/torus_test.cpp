@@ -379,6 +379,8 @@ TEST(Torus, ScLanguage) {
                              "push scale 2 2 2 torus 0 0 0  0 0 1  1 0.25 pop\n",
                              "t.sc");
   ASSERT_EQ(s.shapes<Torus>().size(), 2u);
+  EXPECT_EQ(s.kindCounts(), "2 tori"); // as prism convert counts them
+  EXPECT_EQ(parseScene("torus 0 0 0  0 0 1  1 0.5", "t.sc").kindCounts(), "1 torus");
   const Torus& a = s.shapes<Torus>()[0];
   EXPECT_TRUE(isRound(a));
   test::expectVecNear(a.bounds.lo, {1 - 2.5, 2 - 0.5, 3 - 2.5}, 1e-14);

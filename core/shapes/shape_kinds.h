@@ -6,7 +6,9 @@
 // Each kind is a struct in a file of its own (sphere.h, ...) with
 //   static constexpr const char* kName;  // as in messages and the ray tree
 //   static constexpr bool kFlat;         // a ray leaving it cannot meet it again
-// and these functions of (const Kind&, const ShapeArrays&, ...):
+// (and static constexpr const char* kPlural, for counts, if its plural is
+// not its name and "s": "tori"), and these functions of (const Kind&, const
+// ShapeArrays&, ...):
 //   bool intersect(..., const Ray&, Interval, double& t)  // nearest t in range
 //   Vec3 outwardNormal(..., const Vec3& point)            // unit, geometric
 //   Aabb boundsOf(...)

@@ -23,6 +23,7 @@ namespace prism {
 // parameter t (as for Cone and Ellipsoid).
 struct Torus {
   static constexpr const char* kName = "torus";
+  static constexpr const char* kPlural = "tori"; // in counts (Scene::kindCounts)
   static constexpr bool kFlat = false;
 
   Mat3 objectToWorld{1.0};       // columns: the frame's x, y and z axes in the world

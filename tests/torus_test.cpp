@@ -395,6 +395,8 @@ TEST(Torus, ScLanguage) {
 TEST(Torus, ScLanguageErrors) {
   EXPECT_EQ(test::sceneErrorsOf("torus 0 0 0  0 0 1  1"),
             "t.sc:1:1: error: torus: expected MINOR but reached the end of the file");
+  EXPECT_EQ(test::sceneErrorsOf("torus 0 0 0  0 0 1  1\nsphere 0 0 0 1"),
+            "t.sc:2:1: error: torus: expected MINOR (a number) but found 'sphere'");
   EXPECT_EQ(test::sceneErrorsOf("torus 0 0 0  0 0 1  1 nan"),
             "t.sc:1:23: error: torus: MINOR is not a finite number ('nan')");
   EXPECT_EQ(test::sceneErrorsOf("torus 0 0 0  0 0 0  1 0.5"),

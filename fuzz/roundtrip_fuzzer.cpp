@@ -33,7 +33,7 @@ public:
   void same(const char* what, const Vec3& a, const Vec3& b) {
     if (!problem_ && a != b) problem_ = std::string(what) + ": " + num(a) + " vs " + num(b);
   }
-  // For what the writer must decompose (ellipsoids, elliptic cones) or the
+  // For what the writer must decompose (ellipsoids, elliptic cones, tori) or the
   // reader normalises again (vertex normals): equal up to round-off.
   void near(const char* what, const Vec3& a, const Vec3& b, double scale) {
     const double tolerance = 1e-9 * std::max({maxAbsComponent(a), maxAbsComponent(b), scale});
@@ -76,12 +76,13 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("polygon counts", a.shapes<Polygon>().size(), b.shapes<Polygon>().size());
   c.same("cone counts", a.shapes<Cone>().size(), b.shapes<Cone>().size());
   c.same("triangle counts", a.shapes<Triangle>().size(), b.shapes<Triangle>().size());
+  c.same("torus counts", a.shapes<Torus>().size(), b.shapes<Torus>().size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
   writerOrder(a, 0, order);
   c.same("primitive counts (some primitive is in no group)", order.size(), a.primitiveCount());
-  std::array<std::uint32_t, 5> next{}; // per kind, the next index in b
+  std::array<std::uint32_t, kShapeKindCount> next{}; // per kind, the next index in b
   for (const PrimitiveRef& ra : order) {
     if (c.problem()) return;
     const PrimitiveRef rb{ra.kind, next[std::size_t(ra.kind)]++};
@@ -119,8 +120,9 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
     }
     case kindOf<Ellipsoid>:
     case kindOf<Cone>:
-      c.near("ellipsoid or cone bounds (lo)", boxA.lo, boxB.lo, size);
-      c.near("ellipsoid or cone bounds (hi)", boxA.hi, boxB.hi, size);
+    case kindOf<Torus>:
+      c.near("ellipsoid, cone or torus bounds (lo)", boxA.lo, boxB.lo, size);
+      c.near("ellipsoid, cone or torus bounds (hi)", boxA.hi, boxB.hi, size);
       break;
     }
   }

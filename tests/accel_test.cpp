@@ -7,6 +7,7 @@
 #include "core/accel/bvh.h"
 #include "core/accel/sah_builder.h"
 #include "core/scene/camera.h"
+#include "core/shapes/axis_frame.h"
 #include "tools/scene_generators.h"
 
 #include "scene_builder.h"
@@ -171,6 +172,16 @@ bool expectSameHit(const Scene& scene, const std::vector<std::unique_ptr<Accel>>
   return true;
 }
 
+// The range of query i: the whole ray, or one ending or starting at a random
+// distance, by turns.
+Interval variedRange(int i, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  Interval range;
+  if (i % 5 == 1) range.max = 2 + 20 * std::abs(u(rng));
+  if (i % 5 == 2) range.min = 3 * std::abs(u(rng));
+  return range;
+}
+
 std::vector<std::unique_ptr<Accel>> accelerated(const Scene& scene) {
   std::vector<std::unique_ptr<Accel>> accels;
   for (AccelKind kind : kAccelerated)
@@ -196,9 +207,7 @@ TEST(Accel, EveryModeMatchesBruteForceOnRandomRays) {
         const Vec3 to = scene.bounds(prims[pick(rng)]).centroid();
         if (to != ray.origin) ray.dir = glm::normalize(to - ray.origin);
       }
-      Interval range;
-      if (i % 5 == 1) range.max = 2 + 20 * std::abs(u(rng));
-      if (i % 5 == 2) range.min = 3 * std::abs(u(rng));
+      const Interval range = variedRange(i, rng);
       Hit h;
       if (!expectSameHit(scene, accels, *brute, ray, range, nullptr, tally, &h)) continue;
       // A secondary ray from exactly the point just hit, in every direction,
@@ -272,6 +281,53 @@ TEST(Accel, SlicedConesMatchBruteForce) {
   EXPECT_GT(tally.queries, 5000);
   EXPECT_GT(tally.hits, 2500);
   EXPECT_GT(tally.ties, 10); // the doubled bars
+}
+
+// Tori (whose test isolates a quartic's roots) among spheres, in nested
+// groups, some interlocked: rays aimed through the holes (at the centres), at
+// the inner rims, and secondary rays from the points they hit, in every
+// direction and range.
+TEST(Accel, ToriMatchBruteForce) {
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Scene scene;
+  const std::uint32_t mat = addMaterial(scene, Material{});
+  for (int g = 1; g <= 6; ++g)
+    addGroup(scene, std::uint32_t(g / 2));
+  std::vector<Vec3> rims;
+  for (int i = 0; i < 120; ++i) {
+    const std::uint32_t g = std::uint32_t(i % 7);
+    const Vec3 c(6 * u(rng), 6 * u(rng), 6 * u(rng)), axis = randomUnit(rng);
+    const double major = 0.3 + std::abs(u(rng)), minor = major * (0.01 + 0.8 * std::abs(u(rng)));
+    if (i % 10 == 9) {
+      addSphere(scene, c, major, mat, g);
+      continue;
+    }
+    Torus t = makeTorus(c, axis, major, minor);
+    t.material = mat;
+    addIn(scene, g, [&](SceneBuilder& build) { return build.add(t); });
+    Vec3 x, y;
+    perpendicularPair(axis, x, y);
+    rims.push_back(c + (major - minor) * x);
+  }
+  const auto accels = accelerated(scene);
+  const auto brute = makeAccel(scene, AccelKind::None);
+  const std::vector<PrimitiveRef> prims = scene.allPrimitives();
+  std::uniform_int_distribution<std::size_t> pick(0, prims.size() - 1), rim(0, rims.size() - 1);
+  Tally tally;
+  for (int i = 0; i < 3000; ++i) {
+    Ray ray{Vec3(12 * u(rng), 12 * u(rng), 12 * u(rng)), randomDirection(rng)};
+    const Vec3 to = i % 3 == 0   ? scene.bounds(prims[pick(rng)]).centroid()
+                    : i % 3 == 1 ? rims[rim(rng)] + 1e-9 * randomUnit(rng)
+                                 : ray.origin + ray.dir;
+    if (to != ray.origin) ray.dir = glm::normalize(to - ray.origin);
+    const Interval range = variedRange(i, rng);
+    Hit h;
+    if (!expectSameHit(scene, accels, *brute, ray, range, nullptr, tally, &h)) continue;
+    expectSameHit(scene, accels, *brute, Ray{ray.at(h.t), randomDirection(rng)}, Interval{},
+                  nullptr, tally);
+  }
+  EXPECT_GT(tally.hits, 1500);
 }
 
 TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {

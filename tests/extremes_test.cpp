@@ -78,6 +78,19 @@ long double surfaceDistance(const Cone& c, const ShapeArrays&, const Vec3& p) {
                        });
 }
 
+long double surfaceDistance(const Torus& t, const ShapeArrays&, const Vec3& p) {
+  const long double R = t.major, r = t.minor;
+  return frameDistance(t.worldToObject, t.worldToObjectOffset, p,
+                       [&](const long double* q, long double* g) {
+                         // (rho - R)^2 + z^2 - r^2: the tube's factor of the quartic.
+                         const long double rho = std::sqrt(q[0] * q[0] + q[1] * q[1]);
+                         g[0] = 2 * (rho - R) * q[0] / rho;
+                         g[1] = 2 * (rho - R) * q[1] / rho;
+                         g[2] = 2 * q[2];
+                         return (rho - R) * (rho - R) + q[2] * q[2] - r * r;
+                       });
+}
+
 long double surfaceDistance(const Polygon& poly, const ShapeArrays&, const Vec3& p) {
   long double d = -(long double)poly.planeOffset, n2 = 0;
   for (int i = 0; i < 3; ++i) {
@@ -118,6 +131,8 @@ const char* const kOneOfEachKind[] = {
     // Sheared hard: a disc 1e-4 thick, turned, then squashed along another axis.
     "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-4 sphere 0 0 0 1 pop",
     "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-3 cone 0 0 0 1  0 0 1 0.5 pop",
+    "push rotate 2 -1 1 35 scale 1 0.7 1.2 torus 0.1 0 -0.1  0.3 1 0.2  0.8 0.25 pop",
+    "torus 0 0 0  0 0 1  1 1e-3",
 };
 
 // The largest |distance of the computed hit point from the surface| over

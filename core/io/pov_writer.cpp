@@ -168,6 +168,17 @@ private:
     out_ << material(c.material) << " }\n";
   }
 
+  // POV-Ray's torus lies around its y axis, Prism's around the frame's z: the
+  // matrix takes POV-Ray's x, y and z to the frame's x, z and y (a mirror,
+  // which the torus does not see). `sturm` has POV-Ray solve the quartic
+  // with Sturm sequences, as robust as Prism's root isolation.
+  void one(const Torus& t) {
+    const Mat3& m = t.objectToWorld;
+    out_ << "torus { " << num(t.major) << ", " << num(t.minor) << " sturm "
+         << matrix(Mat3(m[0], m[2], m[1]), t.objectToWorldOffset) << " " << material(t.material)
+         << " }\n";
+  }
+
   // Triangles as POV-Ray meshes: one per run of triangles of one material
   // (a mesh has one material), which POV-Ray stores and bounds more cheaply
   // than as many separate objects.

@@ -15,6 +15,7 @@
 #include "core/scene/scene_builder.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/shape_kinds.h"
+#include "core/shapes/torus.h"
 #include "core/shapes/triangle.h"
 
 #include <algorithm>
@@ -80,7 +81,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 20> kKeywords;
+  static const std::array<Keyword, 21> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -124,6 +125,7 @@ private:
   void sphere(Command& c);
   void polygon(Command& c);
   void cone(Command& c);
+  void torus(Command& c);
   void triangle(Command& c);
   void ptriangle(Command& c);
   void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals);
@@ -169,7 +171,7 @@ private:
   std::vector<Vec3> vertices_; // scratch for polygon
 };
 
-const std::array<Parser::Keyword, 20> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 21> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -182,6 +184,7 @@ const std::array<Parser::Keyword, 20> Parser::kKeywords = {{
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
     {"cone", &Parser::cone},
+    {"torus", &Parser::torus},
     {"triangle", &Parser::triangle},
     {"ptriangle", &Parser::ptriangle},
     {"push", &Parser::push},
@@ -442,6 +445,40 @@ void Parser::cone(Command& c) {
   // core/io/shape_text/), which must stay well conditioned; a circular one
   // is written as its end circles.
   addPlaced(c, cone, "cone", !isCircular(cone));
+}
+
+void Parser::torus(Command& c) {
+  static constexpr const char* kNames[] = {"CX", "CY", "CZ", "AX", "AY", "AZ", "MAJOR", "MINOR"};
+  Arg a[8];
+  if (!numbers(c, kNames, a)) return;
+  const Vec3 center = vec(a), axis = vec(a + 3);
+  if (c.valid && axis == Vec3(0.0)) invalid(c, a[3].token, "the axis (AX AY AZ) must not be zero");
+  for (const int i : {6, 7}) {
+    if (c.valid && !(a[i].value > 0.0))
+      invalid(c, a[i].token,
+              std::string(kNames[i]) + " must be positive, found " + quoted(a[i].token.text));
+  }
+  if (c.valid && !(a[7].value < a[6].value)) {
+    invalid(c, a[7].token,
+            "MINOR must be less than MAJOR, found " + quoted(a[7].token.text) +
+                " (horn and spindle tori are not supported)");
+  }
+  if (!c.valid) return;
+  if (const std::optional<std::string> problem =
+          torusProblem(center, axis, a[6].value, a[7].value)) {
+    error(c.keyword, "torus: " + *problem);
+    return;
+  }
+  Torus torus = makeTorus(center, axis, a[6].value, a[7].value, transform_.linear(),
+                          transform_.point(Vec3(0.0)));
+  if (!allFinite(torus.worldToObject) || !isFinite(torus.worldToObjectOffset)) {
+    error(c.keyword, "torus: too large or too small after the current transform");
+    return;
+  }
+  // A stretched torus is written back through its frame's map (see
+  // core/io/shape_text/), which must stay well conditioned; a round one as
+  // its centre, axis and radii.
+  addPlaced(c, torus, "torus", !isRound(torus));
 }
 
 void Parser::triangle(Command& c) {

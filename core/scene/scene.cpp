@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <string>
 
 namespace prism {
 
@@ -17,13 +18,26 @@ Origin Scene::origin(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.origin; });
 }
 
+namespace {
+
+// A kind's name in the plural: its kPlural where it has one (tori), else its
+// name and "s".
+template <class Kind> std::string plural() {
+  if constexpr (requires { Kind::kPlural; })
+    return Kind::kPlural;
+  else
+    return std::string(Kind::kName) + "s";
+}
+
+} // namespace
+
 std::string Scene::kindCounts() const {
   std::string kinds;
   std::apply(
       [&]<class... Kinds>(const std::vector<Kinds>&... all) {
         ((kinds += all.empty() ? ""
                                : (kinds.empty() ? "" : ", ") + std::to_string(all.size()) + " " +
-                                     Kinds::kName + (all.size() == 1 ? "" : "s")),
+                                     (all.size() == 1 ? Kinds::kName : plural<Kinds>())),
          ...);
       },
       storage.vectors);

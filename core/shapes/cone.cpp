@@ -1,25 +1,12 @@
 #include "core/shapes/cone.h"
 
+#include "core/shapes/axis_frame.h"
 #include "core/shapes/roundoff.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace prism {
-
-namespace {
-
-// A unit vector perpendicular to unit `w` (Frisvad's construction, made
-// branch-safe as in Duff et al. 2017).
-void perpendicularPair(const Vec3& w, Vec3& u, Vec3& v) {
-  const double sign = std::copysign(1.0, w.z);
-  const double a = -1.0 / (sign + w.z);
-  const double b = w.x * w.y * a;
-  u = Vec3(1.0 + sign * w.x * w.x * a, sign * b, -sign * w.x);
-  v = Vec3(b, sign + w.y * w.y * a, -w.y);
-}
-
-} // namespace
 
 std::optional<std::string> coneProblem(const Vec3& base, double baseRadius, const Vec3& apex,
                                        double apexRadius) {
@@ -39,17 +26,11 @@ std::optional<std::string> coneProblem(const Vec3& base, double baseRadius, cons
 Cone makeCone(const Vec3& base, double baseRadius, const Vec3& apex, double apexRadius,
               const Mat3& linear, const Vec3& offset) {
   const Vec3 axis = apex - base;
-  const double scale = maxAbsComponent(axis);
-  const Vec3 w = glm::normalize(axis / scale);
-  Vec3 u, v;
-  perpendicularPair(w, u, v);
-  Cone c;
   // Unit x and y keep the radii in world units; z spans the whole height.
-  c.objectToWorld = linear * Mat3(u, v, axis);
-  c.objectToWorldOffset = linear * base + offset;
-  c.worldToObject = glm::inverse(c.objectToWorld);
-  c.worldToObjectOffset = -(c.worldToObject * c.objectToWorldOffset);
-  c.normalToWorld = glm::transpose(c.worldToObject);
+  Mat3 frame = frameAround(axis);
+  frame[2] = axis;
+  Cone c;
+  placeFrame(c, frame, base, linear, offset);
   c.baseRadius = baseRadius;
   c.apexRadius = apexRadius;
   c.roundoff = frameRoundoffScale(c.objectToWorld, c.worldToObject, c.objectToWorldOffset,
@@ -141,15 +122,6 @@ Vec2 uvAt(const Cone& c, const Vec3& point) {
   return {0.5 + std::atan2(p.y, p.x) / (2.0 * kPi), std::clamp(p.z, 0.0, 1.0)};
 }
 
-bool isCircular(const Cone& c) {
-  const Vec3& x = c.objectToWorld[0];
-  const Vec3& y = c.objectToWorld[1];
-  const Vec3& z = c.objectToWorld[2];
-  const double lx = glm::length(x), ly = glm::length(y), lz = glm::length(z);
-  constexpr double kTolerance = 1e-12;
-  return std::abs(lx - ly) <= kTolerance * lx && std::abs(glm::dot(x, y)) <= kTolerance * lx * ly &&
-         std::abs(glm::dot(x, z)) <= kTolerance * lx * lz &&
-         std::abs(glm::dot(y, z)) <= kTolerance * ly * lz;
-}
+bool isCircular(const Cone& c) { return hasRoundSections(c.objectToWorld); }
 
 } // namespace prism

@@ -28,4 +28,11 @@ void appendCrossings(const Ellipsoid& e, const ShapeArrays&, const Ray& ray, Int
                          e.worldToObject * ray.dir, 1.0, range, out);
 }
 
+void appendCrossings(const Torus& torus, const ShapeArrays&, const Ray& ray, Interval range,
+                     std::vector<Crossing>& out) {
+  const TorusCrossings crossings = torusCrossings(torus, ray, range);
+  for (int i = 0; i < crossings.count; ++i)
+    out.push_back({crossings.t[i], crossings.entering[i], 0});
+}
+
 } // namespace prism

@@ -8,6 +8,7 @@
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
+#include "core/shapes/torus.h"
 
 #include <concepts>
 #include <cstdint>
@@ -33,6 +34,8 @@ concept ClosedShape = requires(const K& shape, const ShapeArrays& arrays, const 
 void appendCrossings(const Sphere& s, const ShapeArrays&, const Ray& ray, Interval range,
                      std::vector<Crossing>& out);
 void appendCrossings(const Ellipsoid& e, const ShapeArrays&, const Ray& ray, Interval range,
+                     std::vector<Crossing>& out);
+void appendCrossings(const Torus& torus, const ShapeArrays&, const Ray& ray, Interval range,
                      std::vector<Crossing>& out);
 
 } // namespace prism

@@ -12,6 +12,7 @@
 #include "core/shapes/polygon.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
+#include "core/shapes/torus.h"
 #include "core/shapes/triangle.h"
 
 #include <algorithm>
@@ -19,7 +20,7 @@
 
 namespace prism {
 
-// How much a kind that intersects in its own frame (ellipsoids, cones) can
+// How much a kind that intersects in its own frame (ellipsoids, cones, tori) can
 // magnify round-off on the way back: max over axes i of |column i of the
 // frame| * |row i of its inverse|. Rounding ray.origin into the frame errs in
 // component i by about u |row i| |origin|, and that error returns to the world
@@ -55,6 +56,7 @@ inline double roundoffScale(const Sphere& s, const ShapeArrays&) {
 // Computed when the shape is made (frameRoundoffScale): a load here.
 inline double roundoffScale(const Ellipsoid& e, const ShapeArrays&) { return e.roundoff; }
 inline double roundoffScale(const Cone& c, const ShapeArrays&) { return c.roundoff; }
+inline double roundoffScale(const Torus& t, const ShapeArrays&) { return t.roundoff; }
 
 // t = (planeOffset - normal.origin) / (normal.dir): the plane's own offset
 // from the world's origin is the only number besides the ray's.

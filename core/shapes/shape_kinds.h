@@ -6,7 +6,9 @@
 // Each kind is a struct in a file of its own (sphere.h, ...) with
 //   static constexpr const char* kName;  // as in messages and the ray tree
 //   static constexpr bool kFlat;         // a ray leaving it cannot meet it again
-// and these functions of (const Kind&, const ShapeArrays&, ...):
+// (and static constexpr const char* kPlural, for counts, if its plural is
+// not its name and "s": "tori"), and these functions of (const Kind&, const
+// ShapeArrays&, ...):
 //   bool intersect(..., const Ray&, Interval, double& t)  // nearest t in range
 //   Vec3 outwardNormal(..., const Vec3& point)            // unit, geometric
 //   Aabb boundsOf(...)
@@ -30,6 +32,7 @@
 #include "core/shapes/roundoff.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
+#include "core/shapes/torus.h"
 #include "core/shapes/triangle.h"
 
 #include <array>
@@ -40,7 +43,7 @@
 
 namespace prism {
 
-// Kinds that need none of the scene's arrays (spheres, ellipsoids, cones)
+// Kinds that need none of the scene's arrays (spheres, ellipsoids, cones, tori)
 // provide intersect(shape, ray, range, t), normalAt(shape, point),
 // uvAt(shape, point) and boundsOf(shape); these give them the interface.
 template <class K>
@@ -89,7 +92,7 @@ template <ShapeKind... Kinds> struct ShapeList {
   static constexpr std::array<bool, size> flat{Kinds::kFlat...};
 };
 
-using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle>;
+using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

@@ -45,5 +45,6 @@ void write(TextOut& text, const Ellipsoid& e, int depth);
 void write(TextOut& text, const Polygon& p, int depth);
 void write(TextOut& text, const Triangle& t, int depth);
 void write(TextOut& text, const Cone& c, int depth);
+void write(TextOut& text, const Torus& t, int depth);
 
 } // namespace prism::sc

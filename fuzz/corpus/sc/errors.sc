@@ -13,6 +13,9 @@ polygon 3 0 0 0 1 0 0 0 1
 polygon x
 cone 0 0 0 1 0 0 0 1
 cone 0 0 0 -1 0 1 0 1
+torus 0 0 0 0 0 0 1 0.5
+torus 0 0 0 0 0 1 1 1
+torus 0 0 0 0 0 1 0 0.5
 ptriangle 0 0 0 0 0 0 1 0 0 0 0 1 0 1 0 0 0 1
 triangle 0 0 0 1 1 1 2 2 2
 scale 0 1 1

@@ -76,12 +76,15 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("polygon counts", a.shapes<Polygon>().size(), b.shapes<Polygon>().size());
   c.same("cone counts", a.shapes<Cone>().size(), b.shapes<Cone>().size());
   c.same("triangle counts", a.shapes<Triangle>().size(), b.shapes<Triangle>().size());
+  c.same("box counts", a.shapes<Box>().size(), b.shapes<Box>().size());
+  c.same("disc counts", a.shapes<Disc>().size(), b.shapes<Disc>().size());
+  c.same("capped cone counts", a.shapes<CappedCone>().size(), b.shapes<CappedCone>().size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
   writerOrder(a, 0, order);
   c.same("primitive counts (some primitive is in no group)", order.size(), a.primitiveCount());
-  std::array<std::uint32_t, 5> next{}; // per kind, the next index in b
+  std::array<std::uint32_t, kShapeKindCount> next{}; // per kind, the next index in b
   for (const PrimitiveRef& ra : order) {
     if (c.problem()) return;
     const PrimitiveRef rb{ra.kind, next[std::size_t(ra.kind)]++};
@@ -119,8 +122,11 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
     }
     case kindOf<Ellipsoid>:
     case kindOf<Cone>:
-      c.near("ellipsoid or cone bounds (lo)", boxA.lo, boxB.lo, size);
-      c.near("ellipsoid or cone bounds (hi)", boxA.hi, boxB.hi, size);
+    case kindOf<Box>:
+    case kindOf<Disc>:
+    case kindOf<CappedCone>:
+      c.near("placed shape bounds (lo)", boxA.lo, boxB.lo, size);
+      c.near("placed shape bounds (hi)", boxA.hi, boxB.hi, size);
       break;
     }
   }

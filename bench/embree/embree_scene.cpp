@@ -116,6 +116,9 @@ EmbreeScene::EmbreeScene(const Scene& scene, const EmbreeOptions& options) {
   if (options.spheres == SphereMode::User) addUser(kindOf<Sphere>, spheres.size());
   addUser(kindOf<Ellipsoid>, scene.shapes<Ellipsoid>().size());
   addUser(kindOf<Cone>, scene.shapes<Cone>().size());
+  addUser(kindOf<Box>, scene.shapes<Box>().size());
+  addUser(kindOf<Disc>, scene.shapes<Disc>().size());
+  addUser(kindOf<CappedCone>, scene.shapes<CappedCone>().size());
   check(device_, "building the geometry");
 
   const auto start = std::chrono::steady_clock::now();

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <string_view>
 
 namespace prism {
 
@@ -17,13 +18,23 @@ Origin Scene::origin(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.origin; });
 }
 
+namespace {
+
+// "2 spheres", "1 box", "3 boxes".
+std::string counted(std::size_t count, std::string_view name) {
+  std::string text = std::to_string(count) + " " + std::string(name);
+  if (count != 1) text += name.ends_with('x') ? "es" : "s";
+  return text;
+}
+
+} // namespace
+
 std::string Scene::kindCounts() const {
   std::string kinds;
   std::apply(
       [&]<class... Kinds>(const std::vector<Kinds>&... all) {
-        ((kinds += all.empty() ? ""
-                               : (kinds.empty() ? "" : ", ") + std::to_string(all.size()) + " " +
-                                     Kinds::kName + (all.size() == 1 ? "" : "s")),
+        ((kinds +=
+          all.empty() ? "" : (kinds.empty() ? "" : ", ") + counted(all.size(), Kinds::kName)),
          ...);
       },
       storage.vectors);

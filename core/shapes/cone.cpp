@@ -1,25 +1,12 @@
 #include "core/shapes/cone.h"
 
+#include "core/shapes/affine_frame.h"
 #include "core/shapes/roundoff.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace prism {
-
-namespace {
-
-// A unit vector perpendicular to unit `w` (Frisvad's construction, made
-// branch-safe as in Duff et al. 2017).
-void perpendicularPair(const Vec3& w, Vec3& u, Vec3& v) {
-  const double sign = std::copysign(1.0, w.z);
-  const double a = -1.0 / (sign + w.z);
-  const double b = w.x * w.y * a;
-  u = Vec3(1.0 + sign * w.x * w.x * a, sign * b, -sign * w.x);
-  v = Vec3(b, sign + w.y * w.y * a, -w.y);
-}
-
-} // namespace
 
 std::optional<std::string> coneProblem(const Vec3& base, double baseRadius, const Vec3& apex,
                                        double apexRadius) {
@@ -126,9 +113,8 @@ Vec3 normalAt(const Cone& c, const Vec3& point) {
 }
 
 Vec2 uvAt(const Cone& c, const Vec3& point) {
-  constexpr double kPi = 3.14159265358979323846;
   const Vec3 p = c.worldToObject * point + c.worldToObjectOffset;
-  return {0.5 + std::atan2(p.y, p.x) / (2.0 * kPi), std::clamp(p.z, 0.0, 1.0)};
+  return {turnFraction(p.x, p.y), std::clamp(p.z, 0.0, 1.0)};
 }
 
 bool isCircular(const Cone& c) {

@@ -567,8 +567,9 @@ TEST(Solids, AccelsAgreeWithBruteForce) {
   EXPECT_GT(test::expectAccelsAgreeWithBruteForce(s, 10.0, 3000), 500);
 }
 
-// A ray from inside a glass box leaves it (the normal points out), and a ray
-// from inside a glass cylinder too; both see the far face.
+// The tracer's entering/leaving test: a ray from inside a box leaves it
+// through the face ahead (the outward normal points along the ray); one from
+// outside a cylinder enters it.
 TEST(Solids, TheTracerEntersAndLeaves) {
   const Scene s = parseScene("eye 0 0 0  lookat 0 1 0  up 0 0 1\n"
                              "light 0 0 0.5  1 1 1\n"

@@ -211,6 +211,26 @@ TEST(Box, UnderRotationScaleAndShear) {
   EXPECT_EQ(m.hi, Vec3(1, 3, 5));
 }
 
+// Circular solids squashed 1e160 times along their axis (circular, so no
+// stretch limit applies): their frame gradients are 1e160 long, and the
+// normals still come out unit length and right.
+TEST(Solids, NormalsOfVeryFlatSolids) {
+  const Scene s = parseScene("push scale 1e-160 1 1 disc 0 0 0  1 0 0  1 pop\n"
+                             "push scale 1 1 1e-160 cylinder 0 0 0  0 0 1  1\n"
+                             "  capped_cone 0 0 0 1  0 0 1 0.5 pop\n",
+                             "t.sc");
+  ASSERT_EQ(s.shapes<Disc>().size(), 1u);
+  ASSERT_EQ(s.shapes<CappedCone>().size(), 2u);
+  test::expectCloseTo(normalAt(s.shapes<Disc>()[0], Vec3(0)), Vec3(1, 0, 0), 1e-15);
+  for (const CappedCone& c : s.shapes<CappedCone>()) {
+    test::expectCloseTo(normalAt(c, Vec3(0.1, 0, 1e-160)), Vec3(0, 0, 1), 1e-15);
+    test::expectCloseTo(normalAt(c, Vec3(0.1, 0.1, 0)), Vec3(0, 0, -1), 1e-15);
+  }
+  // The frustum's side, 1e160 times flatter than 45 degrees: along the axis.
+  test::expectCloseTo(normalAt(s.shapes<CappedCone>()[1], Vec3(0.75, 0, 0.5e-160)), Vec3(0, 0, 1),
+                      1e-15);
+}
+
 TEST(Box, FaceCoordinates) {
   const Box b = unitBox();
   // On the x = 1 face (part 1) u runs along y and v along z.
@@ -398,6 +418,15 @@ TEST(CappedCone, PointedConeAndFrustum) {
   EXPECT_EQ(x[0].part, CappedCone::kBaseCap);
   EXPECT_NEAR(x[1].t, 5.0, 1e-15);
   EXPECT_EQ(x[1].part, CappedCone::kSide); // the tip: there is no cap of radius 0
+  // Down the axis from above: in at the tip (the side's, there is no cap),
+  // out through the base.
+  x = crossingsOf(pointed, ray({0, 0, 5}, {0, 0, -1}));
+  ASSERT_EQ(x.size(), 2u);
+  EXPECT_NEAR(x[0].t, 3.0, 1e-15);
+  EXPECT_TRUE(x[0].entering);
+  EXPECT_EQ(x[0].part, CappedCone::kSide);
+  EXPECT_EQ(x[1].t, 5.0);
+  EXPECT_EQ(x[1].part, CappedCone::kBaseCap);
   // No cap at the point: whatever is near it is the side.
   EXPECT_EQ(partAt(pointed, Vec3(0.01, 0, 1.99)), CappedCone::kSide);
   // Beyond the tip is the other nappe of the quadric, not the cone.

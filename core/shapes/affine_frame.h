@@ -12,6 +12,11 @@
 
 namespace prism {
 
+// `n` (not zero) at unit length, scaled first: the gradient of a very flat
+// shape carried to the world can be so long that its squared length
+// overflows.
+inline Vec3 unitLength(const Vec3& n) { return glm::normalize(n / maxAbsComponent(n)); }
+
 struct AffineFrame {
   Mat3 objectToWorld{1.0};       // columns: the frame's axes in the world
   Vec3 objectToWorldOffset{0.0}; // the world position of the frame's origin
@@ -22,7 +27,7 @@ struct AffineFrame {
   Vec3 pointToObject(const Vec3& p) const { return worldToObject * p + worldToObjectOffset; }
   Vec3 directionToObject(const Vec3& d) const { return worldToObject * d; }
   // The unit world normal of a surface whose gradient in the frame is `g`.
-  Vec3 normalToWorldUnit(const Vec3& g) const { return glm::normalize(normalToWorld * g); }
+  Vec3 normalToWorldUnit(const Vec3& g) const { return unitLength(normalToWorld * g); }
 };
 
 // The frame of x -> linear x + offset; `linear` must be invertible.

@@ -147,11 +147,13 @@ std::uint32_t partAt(const CappedCone& capped, const Vec3& point) {
 
 namespace {
 
+// The normals scaled before they are normalised (unitLength): a very flat
+// cone's gradients are long.
 Vec3 partNormal(const CappedCone& c, std::uint32_t part, const Vec3& point) {
   switch (part) {
-  case CappedCone::kBaseCap: return glm::normalize(c.side.normalToWorld * Vec3(0.0, 0.0, -1.0));
-  case CappedCone::kApexCap: return glm::normalize(c.side.normalToWorld * Vec3(0.0, 0.0, 1.0));
-  default: return normalAt(c.side, point);
+  case CappedCone::kBaseCap: return unitLength(-c.side.normalToWorld[2]);
+  case CappedCone::kApexCap: return unitLength(c.side.normalToWorld[2]);
+  default: return unitLength(c.side.normalToWorld * sideGradient(c.side, point));
   }
 }
 

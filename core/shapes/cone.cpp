@@ -103,13 +103,17 @@ bool intersect(const Cone& c, const Ray& ray, Interval range, double& t) {
   return false;
 }
 
-Vec3 normalAt(const Cone& c, const Vec3& point) {
+Vec3 sideGradient(const Cone& c, const Vec3& point) {
   const Vec3 p = c.worldToObject * point + c.worldToObjectOffset;
   const double k = c.apexRadius - c.baseRadius;
   // The gradient of x^2 + y^2 - r(z)^2 (halved), pointing out of the solid.
   Vec3 g(p.x, p.y, -k * (c.baseRadius + k * p.z));
   if (g.x == 0.0 && g.y == 0.0) g = Vec3(0.0, 0.0, k < 0.0 ? 1.0 : -1.0); // the tip
-  return glm::normalize(c.normalToWorld * g);
+  return g;
+}
+
+Vec3 normalAt(const Cone& c, const Vec3& point) {
+  return glm::normalize(c.normalToWorld * sideGradient(c, point));
 }
 
 Vec2 uvAt(const Cone& c, const Vec3& point) {

@@ -17,8 +17,8 @@ std::optional<std::string> discProblem(const Vec3& center, const Vec3& normal, d
 
 Disc makeDisc(const Vec3& center, const Vec3& normal, double radius, const Mat3& linear,
               const Vec3& offset) {
-  Vec3 w, u, v;
-  unitDirection(normal, w);
+  Vec3 w(0.0, 0.0, 1.0), u, v;
+  unitDirection(normal, w); // discProblem found a direction
   perpendicularPair(w, u, v);
   Disc d;
   d.frame = makeAffineFrame(linear * Mat3(u, v, w), linear * center + offset);

@@ -77,6 +77,9 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("cone counts", a.shapes<Cone>().size(), b.shapes<Cone>().size());
   c.same("triangle counts", a.shapes<Triangle>().size(), b.shapes<Triangle>().size());
   c.same("torus counts", a.shapes<Torus>().size(), b.shapes<Torus>().size());
+  c.same("box counts", a.shapes<Box>().size(), b.shapes<Box>().size());
+  c.same("disc counts", a.shapes<Disc>().size(), b.shapes<Disc>().size());
+  c.same("capped cone counts", a.shapes<CappedCone>().size(), b.shapes<CappedCone>().size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
@@ -121,8 +124,11 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
     case kindOf<Ellipsoid>:
     case kindOf<Cone>:
     case kindOf<Torus>:
-      c.near("ellipsoid, cone or torus bounds (lo)", boxA.lo, boxB.lo, size);
-      c.near("ellipsoid, cone or torus bounds (hi)", boxA.hi, boxB.hi, size);
+    case kindOf<Box>:
+    case kindOf<Disc>:
+    case kindOf<CappedCone>:
+      c.near("placed shape bounds (lo)", boxA.lo, boxB.lo, size);
+      c.near("placed shape bounds (hi)", boxA.hi, boxB.hi, size);
       break;
     }
   }

@@ -189,24 +189,7 @@ TEST(Cone, AccelsAgreeWithBruteForce) {
             " " + std::to_string(u(rng)) + " " + std::to_string(u(rng)) + " " +
             std::to_string(r(rng) - 0.1) + "\n";
   }
-  const Scene s = parseScene(text, "t.sc");
-  const auto none = makeAccel(s, AccelKind::None);
-  for (const AccelKind kind : {AccelKind::Bvh, AccelKind::Groups}) {
-    const auto accel = makeAccel(s, kind);
-    std::mt19937 rays(11);
-    for (int i = 0; i < 3000; ++i) {
-      const Ray q = ray(Vec3(u(rays), u(rays), u(rays)) * 2.0, Vec3(u(rays), u(rays), u(rays)));
-      Hit a, b;
-      const bool ha = none->closestHit(q, Interval{}, nullptr, a);
-      const bool hb = accel->closestHit(q, Interval{}, nullptr, b);
-      ASSERT_EQ(ha, hb) << accelKindName(kind) << " ray " << i;
-      if (ha) {
-        EXPECT_EQ(a.primitive, b.primitive);
-        EXPECT_EQ(a.t, b.t);
-      }
-      EXPECT_EQ(none->anyHit(q, Interval{}, nullptr), accel->anyHit(q, Interval{}, nullptr));
-    }
-  }
+  test::expectAccelsAgreeWithBruteForce(parseScene(text, "t.sc"), 10.0, 3000);
 }
 
 // The tracer's entering/leaving test: a tube seen from inside is left, like a

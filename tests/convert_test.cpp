@@ -122,6 +122,43 @@ TEST(Convert, TransformedPrimitivesRoundTrip) {
   expectSameHits(a, b, 1e-9);
 }
 
+// Boxes, discs, cylinders and capped cones: exactly as their own commands
+// when world-aligned or circular, in their frames under push/pop otherwise.
+TEST(Convert, SolidsRoundTrip) {
+  const Scene exact = parseScene("box 0 0 0  1 2 3\n"
+                                 "cylinder 0 0 0  0 0 2  1\n"
+                                 "capped_cone 1 1 1 2  1 1 3 0.5\n"
+                                 "disc 0 5 0  0 2 0  2\n",
+                                 "in.sc");
+  const std::string written = text(exact);
+  EXPECT_NE(written.find("\nbox 0 0 0  1 2 3\n"), std::string::npos) << written;
+  EXPECT_NE(written.find("\ncylinder 0 0 0  0 0 2 1\n"), std::string::npos) << written;
+  EXPECT_NE(written.find("\ncapped_cone 1 1 1 2  1 1 3 0.5\n"), std::string::npos) << written;
+  EXPECT_NE(written.find("\ndisc 0 5 0  0 1 0 2\n"), std::string::npos) << written;
+  const Scene back = roundTrip(exact);
+  EXPECT_EQ(text(back), written);
+  expectSameHits(exact, back, 1e-15);
+
+  const Scene a = parseScene("push translate 1 -2 0.5 rotate 1 2 3 40 scale 2 0.5 1\n"
+                             "  box -5 -1 -1  -3 0.5 2\n"
+                             "  disc 0 0 0  1 1 0  1\n"
+                             "  cylinder 4 0 0  4 0 1  0.7\n"
+                             "  capped_cone 0 4 -1 1  0 4 1 0\n"
+                             "pop\n"
+                             "push scale 1 3 1 box 2 2 2 3 3 3 pop\n",
+                             "in.sc");
+  ASSERT_EQ(a.shapes<Box>().size(), 2u);
+  EXPECT_FALSE(isWorldAligned(a.shapes<Box>()[0]));
+  EXPECT_TRUE(isWorldAligned(a.shapes<Box>()[1]));
+  EXPECT_FALSE(isCircular(a.shapes<Disc>()[0]));
+  const Scene b = roundTrip(a);
+  EXPECT_EQ(b.shapes<Box>().size(), 2u);
+  EXPECT_EQ(b.shapes<Disc>().size(), 1u);
+  EXPECT_EQ(b.shapes<CappedCone>().size(), 2u);
+  EXPECT_EQ(b.shapes<CappedCone>()[1].side.apexRadius, 0.0);
+  expectSameHits(a, b, 1e-9);
+}
+
 TEST(Convert, DecomposeRebuildsTheMap) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(-2, 2);

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <random>
 #include <sstream>
 #include <string>
@@ -91,6 +92,41 @@ long double surfaceDistance(const Torus& t, const ShapeArrays&, const Vec3& p) {
                        });
 }
 
+// The distance from the nearest of the planes q[axis] = at of a frame.
+long double framePlanesDistance(const Mat3& w, const Vec3& w0, const Vec3& p,
+                                std::initializer_list<std::pair<int, double>> planes) {
+  long double nearest = INFINITY;
+  for (const auto& [axis, at] : planes) {
+    const long double d =
+        frameDistance(w, w0, p, [axis = axis, at = at](const long double* q, long double* g) {
+          g[0] = g[1] = g[2] = 0;
+          g[axis] = 1;
+          return q[axis] - at;
+        });
+    if (std::abs(d) < std::abs(nearest)) nearest = d;
+  }
+  return nearest;
+}
+
+long double surfaceDistance(const Box& b, const ShapeArrays&, const Vec3& p) {
+  const AffineFrame& f = b.frame;
+  return framePlanesDistance(
+      f.worldToObject, f.worldToObjectOffset, p,
+      {{0, b.lo.x}, {0, b.hi.x}, {1, b.lo.y}, {1, b.hi.y}, {2, b.lo.z}, {2, b.hi.z}});
+}
+
+long double surfaceDistance(const Disc& d, const ShapeArrays&, const Vec3& p) {
+  return framePlanesDistance(d.frame.worldToObject, d.frame.worldToObjectOffset, p, {{2, 0.0}});
+}
+
+// The nearest of the side and the caps' planes.
+long double surfaceDistance(const CappedCone& c, const ShapeArrays& arrays, const Vec3& p) {
+  const long double side = surfaceDistance(c.side, arrays, p);
+  const long double caps = framePlanesDistance(c.side.worldToObject, c.side.worldToObjectOffset, p,
+                                               {{2, 0.0}, {2, 1.0}});
+  return std::abs(side) < std::abs(caps) ? side : caps;
+}
+
 long double surfaceDistance(const Polygon& poly, const ShapeArrays&, const Vec3& p) {
   long double d = -(long double)poly.planeOffset, n2 = 0;
   for (int i = 0; i < 3; ++i) {
@@ -133,6 +169,13 @@ const char* const kOneOfEachKind[] = {
     "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-3 cone 0 0 0 1  0 0 1 0.5 pop",
     "push rotate 2 -1 1 35 scale 1 0.7 1.2 torus 0.1 0 -0.1  0.3 1 0.2  0.8 0.25 pop",
     "torus 0 0 0  0 0 1  1 1e-3",
+    // The solids: world-aligned and turned and stretched.
+    "box -0.9 -0.8 -0.7  0.8 0.9 0.6",
+    "push rotate 1 2 3 30 scale 1 0.3 2 rotate 3 -1 1 50 box -0.9 -0.8 -0.7  0.8 0.9 0.6 pop",
+    "push rotate 1 1 0 20 scale 1 1 0.6 disc 0.1 -0.1 0.2  1 2 3  0.9 pop",
+    "cylinder 0 -1 0.1  0.2 1 0  0.7",
+    "push rotate 1 1 0 20 scale 1 1 0.6 capped_cone 0 -1 0 0.8  0.1 1 0.1 0.3 pop",
+    "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-3 capped_cone 0 0 0 1  0 0 1 0 pop",
 };
 
 // The largest |distance of the computed hit point from the surface| over

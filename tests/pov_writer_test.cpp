@@ -223,6 +223,29 @@ TEST(PovWriter, EveryShapeKindIsWritten) {
   EXPECT_EQ(count(pov, "#declare Prism_M"), int(scene.materials.size()));
 }
 
+// The solids as POV-Ray's namesakes: a box by its corners, a cylinder, a
+// cone without `open`, a disc by centre, normal and radius; a turned box in
+// its own frame under its matrix.
+TEST(PovWriter, SolidsAsTheirNamesakes) {
+  const std::string pov = povText("box 0 0 0  1 2 3\n"
+                                  "cylinder 0 0 0  0 0 2  1\n"
+                                  "capped_cone 1 1 1 2  1 1 3 0.5\n"
+                                  "disc 0 5 0  0 2 0  2\n"
+                                  "push rotate 0 0 1 30 box 0 0 0 1 1 1 pop\n");
+  expectNumbers(lineWith(pov, "box { <0, 0, 0>, <1, 2, 3> material"), {0, 0, 0, 1, 2, 3, 0});
+  expectNumbers(lineWith(pov, "cylinder {"), {0, 0, 0, 0, 0, 2, 1, 0});
+  const std::string cone = lineWith(pov, "cone {");
+  EXPECT_EQ(cone.find("open"), std::string::npos) << cone;
+  expectNumbers(cone, {1, 1, 1, 2, 1, 1, 3, 0.5, 0});
+  expectNumbers(lineWith(pov, "disc {"), {0, 5, 0, 0, 1, 0, 2, 0});
+  const std::vector<double> turned = numbersIn(lineWith(pov, "box { <0, 0, 0>, <1, 1, 1> matrix"));
+  ASSERT_EQ(turned.size(), 19u); // 2 corners, 12 matrix entries, the material
+  // The first column is the frame's x turned 30 degrees about z.
+  EXPECT_NEAR(turned[6], std::sqrt(3.0) / 2, 1e-15);
+  EXPECT_NEAR(turned[7], 0.5, 1e-15);
+  EXPECT_EQ(count(pov, "material { Prism_M"), 5);
+}
+
 // Numbers are written in their shortest exact form, so they read back exactly.
 TEST(PovWriter, NumbersRoundTrip) {
   const std::string pov = povText("sphere 0.1 -1e-300 123456789.123 0.3333333333333333\n");

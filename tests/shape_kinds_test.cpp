@@ -62,13 +62,17 @@ static_assert(ShapeKind<TestBox>);
 static_assert(!ShapeKind<Unbounded>);
 static_assert(!ShapeKind<Uncharted>);
 // The kinds that bound a solid list every crossing; the open ones do not.
-static_assert(ClosedShape<Sphere> && ClosedShape<Ellipsoid> && ClosedShape<Torus>);
-static_assert(!ClosedShape<Polygon> && !ClosedShape<Cone> && !ClosedShape<Triangle>);
+static_assert(ClosedShape<Sphere> && ClosedShape<Ellipsoid> && ClosedShape<Torus> &&
+              ClosedShape<Box> && ClosedShape<CappedCone>);
+static_assert(!ClosedShape<Polygon> && !ClosedShape<Cone> && !ClosedShape<Triangle> &&
+              !ClosedShape<Disc>);
 static_assert(ShapeKind<Sphere> && ShapeKind<Ellipsoid> && ShapeKind<Polygon> && ShapeKind<Cone> &&
-              ShapeKind<Triangle> && ShapeKind<Torus>);
+              ShapeKind<Triangle> && ShapeKind<Torus> && ShapeKind<Box> && ShapeKind<Disc> &&
+              ShapeKind<CappedCone>);
 
 // A list with the made-up kind appended: its name and flatness come along.
-using Extended = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, TestBox>;
+using Extended =
+    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone, TestBox>;
 static_assert(Extended::size == kShapeKindCount + 1);
 static_assert(std::is_same_v<Extended::At<kShapeKindCount>, TestBox>);
 
@@ -76,13 +80,16 @@ TEST(ShapeKinds, NamesAndFlatnessFollowTheList) {
   EXPECT_STREQ(Extended::names[kShapeKindCount], "testbox");
   EXPECT_FALSE(Extended::flat[kShapeKindCount]);
   // The real list: names as messages print them, flat exactly for the planar kinds.
-  const std::string names[] = {"sphere", "ellipsoid", "polygon", "cone", "triangle", "torus"};
+  const std::string names[] = {"sphere", "ellipsoid", "polygon", "cone",       "triangle",
+                               "torus",  "box",       "disc",    "capped_cone"};
+  ASSERT_EQ(std::size(names), kShapeKindCount);
   for (std::size_t i = 0; i < kShapeKindCount; ++i)
     EXPECT_EQ(kindName(PrimitiveKind(i)), names[i]);
   EXPECT_TRUE(isFlat(kindOf<Polygon>));
   EXPECT_TRUE(isFlat(kindOf<Triangle>));
+  EXPECT_TRUE(isFlat(kindOf<Disc>));
   EXPECT_FALSE(isFlat(kindOf<Sphere>) || isFlat(kindOf<Ellipsoid>) || isFlat(kindOf<Cone>) ||
-               isFlat(kindOf<Torus>));
+               isFlat(kindOf<Torus>) || isFlat(kindOf<Box>) || isFlat(kindOf<CappedCone>));
 }
 
 // The dispatch reaches every kind: one primitive of each, each visited as its
@@ -95,6 +102,9 @@ TEST(ShapeKinds, TheDispatchReachesEveryKind) {
   scene.shapes<Cone>().push_back({});
   scene.shapes<Triangle>().push_back({});
   scene.shapes<Torus>().push_back({});
+  scene.shapes<Box>().push_back({});
+  scene.shapes<Disc>().push_back({});
+  scene.shapes<CappedCone>().push_back({});
   ASSERT_EQ(scene.primitiveCount(), kShapeKindCount);
   std::set<std::string> visited;
   for (const PrimitiveRef& ref : scene.allPrimitives()) {

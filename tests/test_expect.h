@@ -1,12 +1,14 @@
-// Checks shared by the tests: vectors within a tolerance, and the errors of a
-// scene text that must not parse.
+// Checks shared by the tests: vectors within a tolerance, the errors of a
+// scene text that must not parse, and the hierarchies against brute force.
 #pragma once
 
+#include "core/accel/accel.h"
 #include "core/io/scene_parser.h"
 #include "core/math/math.h"
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 #include <string_view>
 
@@ -35,6 +37,35 @@ inline std::string sceneErrorsOf(std::string_view text, const std::string& name 
     return e.what();
   }
   return "";
+}
+
+// The hierarchies report exactly the hits brute force does (the primitive and
+// t of the nearest, and whether any), for `count` rays from points within
+// +-2 `span` of the origin in random directions. Returns how many hit.
+inline int expectAccelsAgreeWithBruteForce(const Scene& s, double span, int count) {
+  const auto none = makeAccel(s, AccelKind::None);
+  std::uniform_real_distribution<double> u(-span, span);
+  int hits = 0;
+  for (const AccelKind kind : {AccelKind::Bvh, AccelKind::Groups}) {
+    const auto accel = makeAccel(s, kind);
+    std::mt19937 rays(11);
+    for (int i = 0; i < count; ++i) {
+      const Ray q{Vec3(u(rays), u(rays), u(rays)) * 2.0,
+                  glm::normalize(Vec3(u(rays), u(rays), u(rays)))};
+      Hit a, b;
+      const bool ha = none->closestHit(q, Interval{}, nullptr, a);
+      const bool hb = accel->closestHit(q, Interval{}, nullptr, b);
+      EXPECT_EQ(ha, hb) << accelKindName(kind) << " ray " << i;
+      if (ha != hb) return hits;
+      if (ha) {
+        ++hits;
+        EXPECT_EQ(a.primitive, b.primitive);
+        EXPECT_EQ(a.t, b.t);
+      }
+      EXPECT_EQ(none->anyHit(q, Interval{}, nullptr), accel->anyHit(q, Interval{}, nullptr));
+    }
+  }
+  return hits;
 }
 
 } // namespace prism::test

@@ -117,6 +117,9 @@ EmbreeScene::EmbreeScene(const Scene& scene, const EmbreeOptions& options) {
   addUser(kindOf<Ellipsoid>, scene.shapes<Ellipsoid>().size());
   addUser(kindOf<Cone>, scene.shapes<Cone>().size());
   addUser(kindOf<Torus>, scene.shapes<Torus>().size());
+  addUser(kindOf<Box>, scene.shapes<Box>().size());
+  addUser(kindOf<Disc>, scene.shapes<Disc>().size());
+  addUser(kindOf<CappedCone>, scene.shapes<CappedCone>().size());
   check(device_, "building the geometry");
 
   const auto start = std::chrono::steady_clock::now();

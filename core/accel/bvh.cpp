@@ -79,10 +79,13 @@ inline Lanes load(const double* p) {
 }
 #endif
 
-constexpr std::uint32_t kKindShift = 29; // 3 bits of PrimitiveKind, 29 of index
+constexpr std::uint32_t kKindShift = 28; // 4 bits of PrimitiveKind (16 kinds), 28 of index
 constexpr std::uint32_t kIndexMask = (1u << kKindShift) - 1;
 static_assert(kShapeKindCount <= (1u << (32 - kKindShift)),
               "more shape kinds than the packed reference's kind bits hold");
+// Every index fits its bits: the constructor refuses more primitives in all
+// than a leaf can address (Bvh::kFirstMask), fewer than the index bits hold.
+static_assert(Bvh::kFirstMask <= kIndexMask, "a primitive's index must fit the packed reference");
 
 inline PrimitiveRef decodeRef(std::uint32_t code) {
   return {PrimitiveKind(code >> kKindShift), code & kIndexMask};

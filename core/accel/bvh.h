@@ -75,7 +75,7 @@ private:
 
   const Scene& scene_;
   std::vector<Node> nodes_;         // nodes_[0] is the root
-  std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 30 | index
+  std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 28 | index (bvh.cpp)
   int depth_ = 0;                   // levels of nodes
 };
 

@@ -154,18 +154,52 @@ private:
   // An open cone between its two circles; an elliptic one (the scene
   // language allows any transform) as the unit-height cone of its own frame,
   // carried into place by its matrix.
-  void one(const Cone& c) {
+  void one(const Cone& c) { cone(c, true, c.material); }
+
+  // A capped cone is POV-Ray's cone without `open`; one of equal radii its
+  // cylinder.
+  void one(const CappedCone& c) { cone(c.side, false, c.material); }
+
+  void cone(const Cone& c, bool open, std::uint32_t materialIndex) {
     const Mat3& m = c.objectToWorld;
-    out_ << "cone { ";
+    const bool cylinder = !open && c.baseRadius == c.apexRadius;
+    const char* const ending = open ? " open " : " ";
+    out_ << (cylinder ? "cylinder { " : "cone { ");
+    const auto ends = [&](const std::string& base, const std::string& apex, double unit) {
+      out_ << base << ", ";
+      if (!cylinder) out_ << num(c.baseRadius * unit) << ", ";
+      out_ << apex << ", " << num(c.apexRadius * unit) << ending;
+    };
     if (isCircular(c)) {
-      const double unit = glm::length(m[0]);
-      out_ << vec(c.objectToWorldOffset) << ", " << num(c.baseRadius * unit) << ", "
-           << vec(c.objectToWorldOffset + m[2]) << ", " << num(c.apexRadius * unit) << " open ";
+      ends(vec(c.objectToWorldOffset), vec(c.objectToWorldOffset + m[2]), glm::length(m[0]));
     } else {
-      out_ << "<0, 0, 0>, " << num(c.baseRadius) << ", <0, 0, 1>, " << num(c.apexRadius) << " open "
-           << matrix(m, c.objectToWorldOffset) << " ";
+      ends("<0, 0, 0>", "<0, 0, 1>", 1.0);
+      out_ << matrix(m, c.objectToWorldOffset) << " ";
     }
-    out_ << material(c.material) << " }\n";
+    out_ << material(materialIndex) << " }\n";
+  }
+
+  // POV-Ray's box by two corners; one in its own frame carried by its matrix.
+  void one(const Box& b) {
+    out_ << "box { " << vec(b.lo) << ", " << vec(b.hi) << " ";
+    if (!isWorldAligned(b))
+      out_ << matrix(b.frame.objectToWorld, b.frame.objectToWorldOffset) << " ";
+    out_ << material(b.material) << " }\n";
+  }
+
+  // POV-Ray's disc by centre, normal and radius; an elliptic one as the unit
+  // frame's disc carried by its matrix.
+  void one(const Disc& d) {
+    const Mat3& m = d.frame.objectToWorld;
+    out_ << "disc { ";
+    if (isCircular(d)) {
+      out_ << vec(d.frame.objectToWorldOffset) << ", " << vec(d.normal) << ", "
+           << num(d.radius * glm::length(m[0])) << " ";
+    } else {
+      out_ << "<0, 0, 0>, <0, 0, 1>, " << num(d.radius) << " "
+           << matrix(m, d.frame.objectToWorldOffset) << " ";
+    }
+    out_ << material(d.material) << " }\n";
   }
 
   // POV-Ray's torus lies around its y axis, Prism's around the frame's z: the

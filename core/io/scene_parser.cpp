@@ -13,7 +13,10 @@
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
 #include "core/scene/scene_builder.h"
+#include "core/shapes/box.h"
+#include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
+#include "core/shapes/disc.h"
 #include "core/shapes/shape_kinds.h"
 #include "core/shapes/torus.h"
 #include "core/shapes/triangle.h"
@@ -71,6 +74,15 @@ template <int N> bool allFinite(const glm::mat<N, N, double>& m) {
   return true;
 }
 
+// The map a shape placed in its own frame is written back through (see
+// Parser::addPlaced).
+const Mat3& placedMap(const Ellipsoid& e) { return e.objectToWorld; }
+const Mat3& placedMap(const Cone& c) { return c.objectToWorld; }
+const Mat3& placedMap(const CappedCone& c) { return c.side.objectToWorld; }
+const Mat3& placedMap(const Box& b) { return b.frame.objectToWorld; }
+const Mat3& placedMap(const Disc& d) { return d.frame.objectToWorld; }
+const Mat3& placedMap(const Torus& t) { return t.objectToWorld; }
+
 class Parser : public ReaderBase {
 public:
   Scene run(std::string_view text, const std::string& name);
@@ -81,7 +93,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 21> kKeywords;
+  static const std::array<Keyword, 25> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -126,10 +138,19 @@ private:
   void polygon(Command& c);
   void cone(Command& c);
   void torus(Command& c);
+  void cylinder(Command& c);
+  void box(Command& c);
+  void disc(Command& c);
+  // The cone between two end circles under the current transform, for
+  // `cone`, `capped_cone` and `cylinder`, or nothing after an error.
+  std::optional<Cone> placedCone(Command& c, const Vec3& base, double baseRadius, const Vec3& apex,
+                                 double apexRadius);
+  // The checks of a radius that must be positive.
+  void requirePositiveRadius(Command& c, const Arg& radius);
   void triangle(Command& c);
   void ptriangle(Command& c);
   void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals);
-  // Adds a shape placed by its own affine map (an ellipsoid, a cone) after
+  // Adds a shape placed by its own affine map (an ellipsoid, a cone, ...) after
   // the checks they share: within the model range, and, when the map is
   // what `prism convert` writes back, not stretched too unevenly for that.
   template <class Shape> void addPlaced(Command& c, Shape shape, const char* name, bool mapWritten);
@@ -171,7 +192,7 @@ private:
   std::vector<Vec3> vertices_; // scratch for polygon
 };
 
-const std::array<Parser::Keyword, 21> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 25> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -187,6 +208,10 @@ const std::array<Parser::Keyword, 21> Parser::kKeywords = {{
     {"torus", &Parser::torus},
     {"triangle", &Parser::triangle},
     {"ptriangle", &Parser::ptriangle},
+    {"box", &Parser::box},
+    {"disc", &Parser::disc},
+    {"cylinder", &Parser::cylinder},
+    {"capped_cone", &Parser::cone}, // a cone closed by discs at both ends
     {"push", &Parser::push},
     {"pop", &Parser::pop},
     {"translate", &Parser::translate},
@@ -346,8 +371,7 @@ void Parser::sphere(Command& c) {
   Arg a[4];
   if (!numbers(c, {"X", "Y", "Z", "RADIUS"}, a)) return;
   const Arg& r = a[3];
-  if (r.value < 0.0) invalid(c, r.token, "negative radius " + quoted(r.token.text));
-  if (r.value == 0.0) invalid(c, r.token, "radius must be positive, found " + quoted(r.token.text));
+  requirePositiveRadius(c, r);
   if (!c.valid) return;
 
   const Vec3 center = transform_.point(vec(a));
@@ -382,11 +406,11 @@ void Parser::sphere(Command& c) {
 
 template <class Shape>
 void Parser::addPlaced(Command& c, Shape shape, const char* name, bool mapWritten) {
-  if (!withinModelRange(shape.bounds)) {
+  if (!withinModelRange(boundsOf(shape))) {
     error(c.keyword, outsideModelRangeMessage(name));
     return;
   }
-  if (mapWritten && !(stretchRatioBound(shape.objectToWorld) <= kMaxStretchRatio)) {
+  if (mapWritten && !(stretchRatioBound(placedMap(shape)) <= kMaxStretchRatio)) {
     error(c.keyword, tooUnevenMessage(name));
     return;
   }
@@ -430,21 +454,93 @@ void Parser::cone(Command& c) {
     if (a[i].value < 0.0) invalid(c, a[i].token, "negative radius " + quoted(a[i].token.text));
   }
   if (!c.valid) return;
-  const Vec3 base = vec(a), apex = vec(a + 4);
-  if (const std::optional<std::string> problem = coneProblem(base, a[3].value, apex, a[7].value)) {
-    error(c.keyword, "cone: " + *problem);
+  const std::optional<Cone> cone = placedCone(c, vec(a), a[3].value, vec(a + 4), a[7].value);
+  if (!cone) return;
+  if (c.name == "cone") {
+    // An elliptic cone is written back through its frame's map (see
+    // core/io/shape_text/), which must stay well conditioned; a circular one
+    // is written as its end circles.
+    addPlaced(c, *cone, "cone", !isCircular(*cone));
     return;
   }
-  Cone cone = makeCone(base, a[3].value, apex, a[7].value, transform_.linear(),
+  CappedCone capped;
+  capped.side = *cone;
+  addPlaced(c, capped, c.name.c_str(), !isCircular(*cone));
+}
+
+void Parser::cylinder(Command& c) {
+  static constexpr const char* kNames[] = {"BX", "BY", "BZ", "AX", "AY", "AZ", "R"};
+  Arg a[7];
+  if (!numbers(c, kNames, a)) return;
+  requirePositiveRadius(c, a[6]);
+  if (!c.valid) return;
+  const std::optional<Cone> cone = placedCone(c, vec(a), a[6].value, vec(a + 3), a[6].value);
+  if (!cone) return;
+  CappedCone capped;
+  capped.side = *cone;
+  addPlaced(c, capped, "cylinder", !isCircular(*cone));
+}
+
+std::optional<Cone> Parser::placedCone(Command& c, const Vec3& base, double baseRadius,
+                                       const Vec3& apex, double apexRadius) {
+  if (const std::optional<std::string> problem = coneProblem(base, baseRadius, apex, apexRadius)) {
+    error(c.keyword, c.name + ": " + *problem);
+    return std::nullopt;
+  }
+  Cone cone = makeCone(base, baseRadius, apex, apexRadius, transform_.linear(),
                        transform_.point(Vec3(0.0)));
   if (!allFinite(cone.worldToObject) || !isFinite(cone.worldToObjectOffset)) {
-    error(c.keyword, "cone: too large or too small after the current transform");
+    error(c.keyword, c.name + ": too large or too small after the current transform");
+    return std::nullopt;
+  }
+  return cone;
+}
+
+void Parser::requirePositiveRadius(Command& c, const Arg& r) {
+  if (r.value < 0.0) invalid(c, r.token, "negative radius " + quoted(r.token.text));
+  if (r.value == 0.0) invalid(c, r.token, "radius must be positive, found " + quoted(r.token.text));
+}
+
+void Parser::box(Command& c) {
+  static constexpr const char* kNames[] = {"X0", "Y0", "Z0", "X1", "Y1", "Z1"};
+  Arg a[6];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  const Vec3 corner0 = vec(a), corner1 = vec(a + 3);
+  if (const std::optional<std::string> problem = boxProblem(corner0, corner1)) {
+    error(c.keyword, "box: " + *problem);
     return;
   }
-  // An elliptic cone is written back through its frame's map (see
-  // core/io/shape_text/), which must stay well conditioned; a circular one
-  // is written as its end circles.
-  addPlaced(c, cone, "cone", !isCircular(cone));
+  const Box box = makeBox(corner0, corner1, transform_.linear(), transform_.point(Vec3(0.0)));
+  // A scale can round the corners together, or the map's inverse overflow.
+  if (!allFinite(box.frame.worldToObject) || !isFinite(box.frame.worldToObjectOffset) ||
+      !(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z)) {
+    error(c.keyword, "box: too large or too small after the current transform");
+    return;
+  }
+  // A box without rotation or shear is stored and written as its corners;
+  // any other through its frame's map.
+  addPlaced(c, box, "box", !isWorldAligned(box));
+}
+
+void Parser::disc(Command& c) {
+  static constexpr const char* kNames[] = {"CX", "CY", "CZ", "NX", "NY", "NZ", "R"};
+  Arg a[7];
+  if (!numbers(c, kNames, a)) return;
+  if (vec(a + 3) == Vec3(0.0)) invalid(c, a[3].token, "N (NX NY NZ) must not be the zero vector");
+  requirePositiveRadius(c, a[6]);
+  if (!c.valid) return;
+  if (const std::optional<std::string> problem = discProblem(vec(a), vec(a + 3), a[6].value)) {
+    error(c.keyword, "disc: " + *problem);
+    return;
+  }
+  const Disc disc =
+      makeDisc(vec(a), vec(a + 3), a[6].value, transform_.linear(), transform_.point(Vec3(0.0)));
+  if (!allFinite(disc.frame.worldToObject) || !isFinite(disc.frame.worldToObjectOffset) ||
+      !isFinite(disc.normal)) {
+    error(c.keyword, "disc: too large or too small after the current transform");
+    return;
+  }
+  addPlaced(c, disc, "disc", !isCircular(disc));
 }
 
 void Parser::torus(Command& c) {

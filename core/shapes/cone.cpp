@@ -1,6 +1,7 @@
 #include "core/shapes/cone.h"
 
 #include "core/shapes/axis_frame.h"
+#include "core/shapes/affine_frame.h"
 #include "core/shapes/roundoff.h"
 
 #include <algorithm>
@@ -107,19 +108,22 @@ bool intersect(const Cone& c, const Ray& ray, Interval range, double& t) {
   return false;
 }
 
-Vec3 normalAt(const Cone& c, const Vec3& point) {
+Vec3 sideGradient(const Cone& c, const Vec3& point) {
   const Vec3 p = c.worldToObject * point + c.worldToObjectOffset;
   const double k = c.apexRadius - c.baseRadius;
   // The gradient of x^2 + y^2 - r(z)^2 (halved), pointing out of the solid.
   Vec3 g(p.x, p.y, -k * (c.baseRadius + k * p.z));
   if (g.x == 0.0 && g.y == 0.0) g = Vec3(0.0, 0.0, k < 0.0 ? 1.0 : -1.0); // the tip
-  return glm::normalize(c.normalToWorld * g);
+  return g;
+}
+
+Vec3 normalAt(const Cone& c, const Vec3& point) {
+  return glm::normalize(c.normalToWorld * sideGradient(c, point));
 }
 
 Vec2 uvAt(const Cone& c, const Vec3& point) {
-  constexpr double kPi = 3.14159265358979323846;
   const Vec3 p = c.worldToObject * point + c.worldToObjectOffset;
-  return {0.5 + std::atan2(p.y, p.x) / (2.0 * kPi), std::clamp(p.z, 0.0, 1.0)};
+  return {turnFraction(p.x, p.y), std::clamp(p.z, 0.0, 1.0)};
 }
 
 bool isCircular(const Cone& c) { return hasRoundSections(c.objectToWorld); }

@@ -56,6 +56,9 @@ bool intersect(const Cone& c, const Ray& ray, Interval range, double& t);
 // cone also tilted toward the narrow end). At a pointed tip, where the
 // surface has no normal, the axis direction out of the tip.
 Vec3 normalAt(const Cone& c, const Vec3& point);
+// That normal before it is carried to the world and normalised: the
+// gradient in the cone's frame.
+Vec3 sideGradient(const Cone& c, const Vec3& point);
 
 // In the cone's frame: u the angle around the axis as a fraction of a turn
 // (0.5 on the frame's +x axis, growing toward +y), v the height from the base

@@ -5,6 +5,8 @@
 // provides it and can then be an operand of CSG.
 #pragma once
 
+#include "core/shapes/box.h"
+#include "core/shapes/capped_cone.h"
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
@@ -36,6 +38,12 @@ void appendCrossings(const Sphere& s, const ShapeArrays&, const Ray& ray, Interv
 void appendCrossings(const Ellipsoid& e, const ShapeArrays&, const Ray& ray, Interval range,
                      std::vector<Crossing>& out);
 void appendCrossings(const Torus& torus, const ShapeArrays&, const Ray& ray, Interval range,
+                     std::vector<Crossing>& out);
+// A box's parts are its faces, a capped cone's its side and caps (box.h,
+// capped_cone.h). A ray touching only an edge or a rim is never inside.
+void appendCrossings(const Box& b, const ShapeArrays&, const Ray& ray, Interval range,
+                     std::vector<Crossing>& out);
+void appendCrossings(const CappedCone& c, const ShapeArrays&, const Ray& ray, Interval range,
                      std::vector<Crossing>& out);
 
 } // namespace prism

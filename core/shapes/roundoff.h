@@ -7,7 +7,10 @@
 // times a small constant. Every |.| here is the largest absolute component.
 #pragma once
 
+#include "core/shapes/box.h"
+#include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
+#include "core/shapes/disc.h"
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/polygon.h"
 #include "core/shapes/shape_arrays.h"
@@ -57,6 +60,9 @@ inline double roundoffScale(const Sphere& s, const ShapeArrays&) {
 inline double roundoffScale(const Ellipsoid& e, const ShapeArrays&) { return e.roundoff; }
 inline double roundoffScale(const Cone& c, const ShapeArrays&) { return c.roundoff; }
 inline double roundoffScale(const Torus& t, const ShapeArrays&) { return t.roundoff; }
+inline double roundoffScale(const Box& b, const ShapeArrays&) { return b.roundoff; }
+inline double roundoffScale(const Disc& d, const ShapeArrays&) { return d.roundoff; }
+inline double roundoffScale(const CappedCone& c, const ShapeArrays&) { return c.side.roundoff; }
 
 // t = (planeOffset - normal.origin) / (normal.dir): the plane's own offset
 // from the world's origin is the only number besides the ray's.

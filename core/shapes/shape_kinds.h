@@ -25,7 +25,10 @@
 // pictures), a reader handler and a writer overload (see docs/architecture.md).
 #pragma once
 
+#include "core/shapes/box.h"
+#include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
+#include "core/shapes/disc.h"
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/polygon.h"
 #include "core/shapes/primitives.h"
@@ -43,7 +46,8 @@
 
 namespace prism {
 
-// Kinds that need none of the scene's arrays (spheres, ellipsoids, cones, tori)
+// Kinds that need none of the scene's arrays (spheres, ellipsoids, cones,
+// tori, boxes, discs, capped cones)
 // provide intersect(shape, ray, range, t), normalAt(shape, point),
 // uvAt(shape, point) and boundsOf(shape); these give them the interface.
 template <class K>
@@ -92,7 +96,8 @@ template <ShapeKind... Kinds> struct ShapeList {
   static constexpr std::array<bool, size> flat{Kinds::kFlat...};
 };
 
-using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus>;
+using ShapeKinds =
+    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

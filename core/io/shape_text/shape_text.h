@@ -46,5 +46,8 @@ void write(TextOut& text, const Polygon& p, int depth);
 void write(TextOut& text, const Triangle& t, int depth);
 void write(TextOut& text, const Cone& c, int depth);
 void write(TextOut& text, const Torus& t, int depth);
+void write(TextOut& text, const CappedCone& c, int depth);
+void write(TextOut& text, const Box& b, int depth);
+void write(TextOut& text, const Disc& d, int depth);
 
 } // namespace prism::sc

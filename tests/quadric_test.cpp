@@ -11,6 +11,7 @@
 #include "core/io/pov_writer.h"
 #include "core/io/scene_parser.h"
 #include "core/io/scene_writer.h"
+#include "core/render/tracer.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/quadric_surface.h"
 #include "core/shapes/shape_kinds.h"
@@ -369,6 +370,29 @@ TEST(Quadric, ConvertWritesPovRayQuadric) {
                            "3> material { Prism_M0 } }\n"),
             std::string::npos)
       << out.str();
+}
+
+// The tracer sees the open surface from both sides: from inside the
+// hyperboloid's waist a ray leaves through it (the outward normal along the
+// ray) and is shaded on the inner side; from outside one enters.
+TEST(Quadric, TheTracerSeesBothSides) {
+  const Scene s = parseScene("eye 0 0 0  lookat 1 0 0  up 0 0 1\n"
+                             "light 0 0 0.5  1 1 1\n"
+                             "quadric 1 1 -1 0 0 0 0 0 0 -1  -3 -3 -3  3 3 3\n",
+                             "t.sc");
+  const auto accel = makeAccel(s, AccelKind::Bvh);
+  Tracer tracer(s, *accel, 1);
+  RayCounts counts;
+  RayTreeNode inside;
+  tracer.trace(ray({0, 0, 0}, {1, 0, 0}), 1, counts, &inside);
+  EXPECT_TRUE(inside.hit);
+  EXPECT_TRUE(inside.leaving);
+  test::expectCloseTo(inside.shadingNormal, Vec3(-1, 0, 0), 1e-15);
+  RayTreeNode outside;
+  tracer.trace(ray({9, 0, 0}, {-1, 0, 0}), 1, counts, &outside);
+  EXPECT_TRUE(outside.hit);
+  EXPECT_FALSE(outside.leaving);
+  test::expectCloseTo(outside.shadingNormal, Vec3(1, 0, 0), 1e-15);
 }
 
 TEST(Quadric, AccelsAgreeWithBruteForce) {

@@ -80,6 +80,7 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("box counts", a.shapes<Box>().size(), b.shapes<Box>().size());
   c.same("disc counts", a.shapes<Disc>().size(), b.shapes<Disc>().size());
   c.same("capped cone counts", a.shapes<CappedCone>().size(), b.shapes<CappedCone>().size());
+  c.same("quadric counts", a.shapes<Quadric>().size(), b.shapes<Quadric>().size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
@@ -119,6 +120,18 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
           c.near("vertex normals", a.meshNormals[ta.normal[i]], b.meshNormals[tb.normal[i]], 1.0);
         }
       }
+      break;
+    }
+    case kindOf<Quadric>: {
+      // The coefficients and the clip box are written as given: exact; the
+      // frame's map decomposed, so its bounds to round-off.
+      const Quadric& qa = a.shapes<Quadric>()[ra.index];
+      const Quadric& qb = b.shapes<Quadric>()[rb.index];
+      c.same("quadric coefficients", qa.coef, qb.coef);
+      c.same("quadric clip boxes (lo)", qa.lo, qb.lo);
+      c.same("quadric clip boxes (hi)", qa.hi, qb.hi);
+      c.near("quadric bounds (lo)", boxA.lo, boxB.lo, size);
+      c.near("quadric bounds (hi)", boxA.hi, boxB.hi, size);
       break;
     }
     case kindOf<Ellipsoid>:

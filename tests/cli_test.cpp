@@ -270,7 +270,8 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
 }
 
 TEST_F(Cli, RendersEveryShippedScene) {
-  for (const char* name : {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc"}) {
+  for (const char* name :
+       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc", "quadrics.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
     const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");
@@ -393,10 +394,10 @@ TEST(ChildProcesses, OnlyTheLeakCheckersOwnCrashIsRunAgain) {
   const std::string crash = "Tracer caught signal 11: addr=0x17e8 pc=0x7f sp=0x7f\n"
                             "==944==LeakSanitizer has encountered a fatal error.\n";
   EXPECT_TRUE(leakCheckerCrashed({134, "", "frames while rendering: 1\n" + crash}));
-  EXPECT_FALSE(leakCheckerCrashed({134, "", "==9==ERROR: LeakSanitizer: detected memory leaks\n" +
-                                                crash}));
-  EXPECT_FALSE(leakCheckerCrashed({1, "", "==9==ERROR: AddressSanitizer: heap-use-after-free\n" +
-                                             crash}));
+  EXPECT_FALSE(
+      leakCheckerCrashed({134, "", "==9==ERROR: LeakSanitizer: detected memory leaks\n" + crash}));
+  EXPECT_FALSE(
+      leakCheckerCrashed({1, "", "==9==ERROR: AddressSanitizer: heap-use-after-free\n" + crash}));
   EXPECT_FALSE(leakCheckerCrashed({134, "", "Tracer caught signal 11\n"}));
   EXPECT_FALSE(leakCheckerCrashed({2, "", "a.sc:1:1: error: unknown command\n"}));
 }

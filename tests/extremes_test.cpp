@@ -127,6 +127,22 @@ long double surfaceDistance(const CappedCone& c, const ShapeArrays& arrays, cons
   return std::abs(side) < std::abs(caps) ? side : caps;
 }
 
+long double surfaceDistance(const Quadric& quadric, const ShapeArrays&, const Vec3& p) {
+  const AffineFrame& f = quadric.frame;
+  return frameDistance(f.worldToObject, f.worldToObjectOffset, p,
+                       [&](const long double* q, long double* g) {
+                         long double k[10];
+                         for (int i = 0; i < 10; ++i)
+                           k[i] = quadric.coef[i];
+                         g[0] = 2 * k[0] * q[0] + k[3] * q[1] + k[5] * q[2] + k[6];
+                         g[1] = 2 * k[1] * q[1] + k[3] * q[0] + k[4] * q[2] + k[7];
+                         g[2] = 2 * k[2] * q[2] + k[4] * q[1] + k[5] * q[0] + k[8];
+                         return k[0] * q[0] * q[0] + k[1] * q[1] * q[1] + k[2] * q[2] * q[2] +
+                                k[3] * q[0] * q[1] + k[4] * q[1] * q[2] + k[5] * q[0] * q[2] +
+                                k[6] * q[0] + k[7] * q[1] + k[8] * q[2] + k[9];
+                       });
+}
+
 long double surfaceDistance(const Polygon& poly, const ShapeArrays&, const Vec3& p) {
   long double d = -(long double)poly.planeOffset, n2 = 0;
   for (int i = 0; i < 3; ++i) {
@@ -176,6 +192,10 @@ const char* const kOneOfEachKind[] = {
     "cylinder 0 -1 0.1  0.2 1 0  0.7",
     "push rotate 1 1 0 20 scale 1 1 0.6 capped_cone 0 -1 0 0.8  0.1 1 0.1 0.3 pop",
     "push scale 3 1 0.5 rotate 1 1 1 40 scale 1 1 1e-3 capped_cone 0 0 0 1  0 0 1 0 pop",
+    // Quadrics: a paraboloid turned and stretched, a skewed hyperboloid.
+    "push rotate 1 2 3 30 scale 1 0.6 1.3 quadric 1 1 0 0 0 0 0 0 -1 0  -0.9 -0.8 -0.1  0.8 0.9 "
+    "0.9 pop",
+    "quadric 1 1 -1 0.2 0 0.1 0 0 0 -0.3  -0.9 -0.8 -0.7  0.8 0.9 0.6",
 };
 
 // The largest |distance of the computed hit point from the surface| over

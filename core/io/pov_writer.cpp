@@ -202,6 +202,20 @@ private:
     out_ << material(d.material) << " }\n";
   }
 
+  // POV-Ray's quadric takes A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x +
+  // H y + I z + J as <A, B, C>, <D, E, F>, <G, H, I>, J: its second vector is
+  // xy, xz, yz, where Prism's D E F are xy, yz, xz. The clip box is POV-Ray's
+  // clipped_by, given before the matrix so that the matrix carries both.
+  void one(const Quadric& q) {
+    const std::array<double, 10> k = givenCoefficients(q);
+    out_ << "quadric { <" << num(k[0]) << ", " << num(k[1]) << ", " << num(k[2]) << ">, <"
+         << num(k[3]) << ", " << num(k[5]) << ", " << num(k[4]) << ">, <" << num(k[6]) << ", "
+         << num(k[7]) << ", " << num(k[8]) << ">, " << num(k[9]) << " clipped_by { box { "
+         << vec(q.lo) << ", " << vec(q.hi) << " } } ";
+    if (!isUnplaced(q)) out_ << matrix(q.frame.objectToWorld, q.frame.objectToWorldOffset) << " ";
+    out_ << material(q.material) << " }\n";
+  }
+
   // POV-Ray's torus lies around its y axis, Prism's around the frame's z: the
   // matrix takes POV-Ray's x, y and z to the frame's x, z and y (a mirror,
   // which the torus does not see). `sturm` has POV-Ray solve the quartic

@@ -17,6 +17,7 @@
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/disc.h"
+#include "core/shapes/quadric_surface.h"
 #include "core/shapes/shape_kinds.h"
 #include "core/shapes/torus.h"
 #include "core/shapes/triangle.h"
@@ -82,6 +83,7 @@ const Mat3& placedMap(const CappedCone& c) { return c.side.objectToWorld; }
 const Mat3& placedMap(const Box& b) { return b.frame.objectToWorld; }
 const Mat3& placedMap(const Disc& d) { return d.frame.objectToWorld; }
 const Mat3& placedMap(const Torus& t) { return t.objectToWorld; }
+const Mat3& placedMap(const Quadric& q) { return q.frame.objectToWorld; }
 
 class Parser : public ReaderBase {
 public:
@@ -93,7 +95,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 25> kKeywords;
+  static const std::array<Keyword, 26> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -141,6 +143,7 @@ private:
   void cylinder(Command& c);
   void box(Command& c);
   void disc(Command& c);
+  void quadric(Command& c);
   // The cone between two end circles under the current transform, for
   // `cone`, `capped_cone` and `cylinder`, or nothing after an error.
   std::optional<Cone> placedCone(Command& c, const Vec3& base, double baseRadius, const Vec3& apex,
@@ -192,7 +195,7 @@ private:
   std::vector<Vec3> vertices_; // scratch for polygon
 };
 
-const std::array<Parser::Keyword, 25> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 26> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -212,6 +215,7 @@ const std::array<Parser::Keyword, 25> Parser::kKeywords = {{
     {"disc", &Parser::disc},
     {"cylinder", &Parser::cylinder},
     {"capped_cone", &Parser::cone}, // a cone closed by discs at both ends
+    {"quadric", &Parser::quadric},
     {"push", &Parser::push},
     {"pop", &Parser::pop},
     {"translate", &Parser::translate},
@@ -541,6 +545,34 @@ void Parser::disc(Command& c) {
     return;
   }
   addPlaced(c, disc, "disc", !isCircular(disc));
+}
+
+void Parser::quadric(Command& c) {
+  static constexpr const char* kNames[] = {"A", "B", "C",  "D",  "E",  "F",  "G",  "H",
+                                           "I", "J", "X0", "Y0", "Z0", "X1", "Y1", "Z1"};
+  Arg a[16];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  std::array<double, 10> coef;
+  for (int i = 0; i < 10; ++i)
+    coef[i] = a[i].value;
+  const Vec3 corner0 = vec(a + 10), corner1 = vec(a + 13);
+  if (const std::optional<std::string> problem = quadricProblem(coef, corner0, corner1)) {
+    error(c.keyword, "quadric: " + *problem);
+    return;
+  }
+  const Quadric q =
+      makeQuadric(coef, corner0, corner1, transform_.linear(), transform_.point(Vec3(0.0)));
+  // The map's inverse can overflow, and the rescaled coefficients too.
+  bool finite = allFinite(q.frame.worldToObject) && isFinite(q.frame.worldToObjectOffset);
+  for (const double k : q.coef)
+    finite = finite && std::isfinite(k);
+  if (!finite) {
+    error(c.keyword, "quadric: too large or too small after the current transform");
+    return;
+  }
+  // Written back in its frame under the current transform's map (see
+  // core/io/shape_text/), which must stay well conditioned.
+  addPlaced(c, q, "quadric", !isUnplaced(q));
 }
 
 void Parser::torus(Command& c) {

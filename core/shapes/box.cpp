@@ -45,21 +45,19 @@ Box makeBox(const Vec3& corner0, const Vec3& corner1, const Mat3& linear, const 
   return b;
 }
 
-bool boxSpan(const Box& b, const Ray& ray, BoxSpan& span) {
-  const Vec3 o = b.frame.pointToObject(ray.origin);
-  const Vec3 d = b.frame.directionToObject(ray.dir);
+bool slabSpan(const Vec3& o, const Vec3& d, const Vec3& lo, const Vec3& hi, BoxSpan& span) {
   span = {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), 0, 0};
   for (int i = 0; i < 3; ++i) {
     if (d[i] == 0.0) {
       // Parallel to the slab: inside it for every t (a ray in a face's plane
       // counts as inside, so it meets the faces across its path) or never.
-      if (!(o[i] >= b.lo[i] && o[i] <= b.hi[i])) return false;
+      if (!(o[i] >= lo[i] && o[i] <= hi[i])) return false;
       continue;
     }
     // Divisions, not a reciprocal: the plane's t is exactly rounded, so the
     // faces meeting at an edge agree on it. Never NaN: d[i] is not zero.
-    const double toLo = (b.lo[i] - o[i]) / d[i];
-    const double toHi = (b.hi[i] - o[i]) / d[i];
+    const double toLo = (lo[i] - o[i]) / d[i];
+    const double toHi = (hi[i] - o[i]) / d[i];
     const bool up = d[i] > 0.0;
     const double enter = up ? toLo : toHi, leave = up ? toHi : toLo;
     // Strict comparisons: at an edge the first axis keeps it, the same for
@@ -68,6 +66,11 @@ bool boxSpan(const Box& b, const Ray& ray, BoxSpan& span) {
     if (leave < span.t1) span = {span.t0, leave, span.part0, std::uint32_t(2 * i + (up ? 1 : 0))};
   }
   return span.t0 <= span.t1;
+}
+
+bool boxSpan(const Box& b, const Ray& ray, BoxSpan& span) {
+  return slabSpan(b.frame.pointToObject(ray.origin), b.frame.directionToObject(ray.dir), b.lo, b.hi,
+                  span);
 }
 
 bool intersect(const Box& b, const Ray& ray, Interval range, double& t) {

@@ -31,7 +31,7 @@ namespace prism {
 struct Box {
   static constexpr const char* kName = "box";
   static constexpr const char* kPlural = "boxes"; // in counts (Scene::kindCounts)
-  static constexpr bool kFlat = false; // a ray leaving the inside meets it again
+  static constexpr bool kFlat = false;            // a ray leaving the inside meets it again
 
   AffineFrame frame;
   Vec3 lo{-1.0};
@@ -61,6 +61,9 @@ struct BoxSpan {
   std::uint32_t part0, part1;
 };
 bool boxSpan(const Box& b, const Ray& ray, BoxSpan& span);
+// The same for the line o + t d and the box lo <= x <= hi of its own
+// coordinates (the clip box of a quadric).
+bool slabSpan(const Vec3& o, const Vec3& d, const Vec3& lo, const Vec3& hi, BoxSpan& span);
 
 // The nearest t inside `range` where the ray meets the surface.
 bool intersect(const Box& b, const Ray& ray, Interval range, double& t);

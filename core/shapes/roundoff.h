@@ -13,6 +13,7 @@
 #include "core/shapes/disc.h"
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/polygon.h"
+#include "core/shapes/quadric_surface.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
 #include "core/shapes/torus.h"
@@ -63,6 +64,9 @@ inline double roundoffScale(const Torus& t, const ShapeArrays&) { return t.round
 inline double roundoffScale(const Box& b, const ShapeArrays&) { return b.roundoff; }
 inline double roundoffScale(const Disc& d, const ShapeArrays&) { return d.roundoff; }
 inline double roundoffScale(const CappedCone& c, const ShapeArrays&) { return c.side.roundoff; }
+// The clip box's largest coordinate as the size: the root is polished by a
+// Newton step at the hit point (see docs/rendering-model.md#quadrics).
+inline double roundoffScale(const Quadric& q, const ShapeArrays&) { return q.roundoff; }
 
 // t = (planeOffset - normal.origin) / (normal.dir): the plane's own offset
 // from the world's origin is the only number besides the ray's.

@@ -32,6 +32,7 @@
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/polygon.h"
 #include "core/shapes/primitives.h"
+#include "core/shapes/quadric_surface.h"
 #include "core/shapes/roundoff.h"
 #include "core/shapes/shape_arrays.h"
 #include "core/shapes/sphere.h"
@@ -47,7 +48,7 @@
 namespace prism {
 
 // Kinds that need none of the scene's arrays (spheres, ellipsoids, cones,
-// tori, boxes, discs, capped cones)
+// tori, boxes, discs, capped cones, quadrics)
 // provide intersect(shape, ray, range, t), normalAt(shape, point),
 // uvAt(shape, point) and boundsOf(shape); these give them the interface.
 template <class K>
@@ -97,7 +98,7 @@ template <ShapeKind... Kinds> struct ShapeList {
 };
 
 using ShapeKinds =
-    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone>;
+    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone, Quadric>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

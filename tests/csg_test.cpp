@@ -143,6 +143,38 @@ TEST(Csg, GlassLensRefractsLikeItsTwoSurfaces) {
   expectCloseTo(out->ray.dir, d2, 1e-12);
 }
 
+// A biconvex lens of two spheres of radius 4, 1 thick, focuses a parallel
+// beam near the axis where the thick-lens formula says: 1/f = (n - 1)
+// (1/R1 - 1/R2 + (n - 1) d / (n R1 R2)), the back focus f (1 - (n - 1) d /
+// (n R1)) beyond the second surface.
+TEST(Csg, GlassLensFocusesWhereTheThickLensFormulaSays) {
+  const Scene s = parseScene("surface 1 1 1  0 0 1  1 1.5\n"
+                             "csg intersection sphere 0 0 3.5 4  sphere 0 0 -3.5 4 end\n",
+                             "t.sc");
+  const auto accel = makeAccel(s, AccelKind::Bvh);
+  Tracer tracer(s, *accel, 3);
+  const double n = 1.5, r1 = 4.0, r2 = -4.0, d = 1.0;
+  const double f = 1.0 / ((n - 1) * (1 / r1 - 1 / r2 + (n - 1) * d / (n * r1 * r2)));
+  const double focus = 0.5 + f * (1 - (n - 1) * d / (n * r1));
+  for (const double h : {1e-3, -2e-3, 5e-4}) {
+    RayCounts counts;
+    RayTreeNode root;
+    tracer.trace(ray({h, 0, -5}, {0, 0, 1}), 1, counts, &root);
+    const RayTreeNode* node = &root;
+    for (int i = 0; i < 2; ++i) {
+      const auto it =
+          std::find_if(node->children.begin(), node->children.end(),
+                       [](const RayTreeNode& c) { return c.kind == RayKind::Transmitted; });
+      ASSERT_NE(it, node->children.end());
+      node = &*it;
+    }
+    // Where the emerging ray crosses the axis (x = 0).
+    const Ray& out = node->ray;
+    const double z = out.origin.z - out.origin.x * out.dir.z / out.dir.x;
+    EXPECT_NEAR(z, focus, 1e-6 * focus) << h; // spherical aberration: O(h^2)
+  }
+}
+
 // A box with a sphere taken out of the middle of its top face.
 const char* const kHollow = "csg difference\n"
                             "  box -1 -1 -1  1 1 1\n"

@@ -81,6 +81,9 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("disc counts", a.shapes<Disc>().size(), b.shapes<Disc>().size());
   c.same("capped cone counts", a.shapes<CappedCone>().size(), b.shapes<CappedCone>().size());
   c.same("quadric counts", a.shapes<Quadric>().size(), b.shapes<Quadric>().size());
+  c.same("csg counts", a.shapes<Csg>().size(), b.shapes<Csg>().size());
+  c.same("csg operand counts", a.csgOperands.size(), b.csgOperands.size());
+  c.same("nested csg counts", a.csgNodes.size(), b.csgNodes.size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
@@ -143,6 +146,20 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
       c.near("placed shape bounds (lo)", boxA.lo, boxB.lo, size);
       c.near("placed shape bounds (hi)", boxA.hi, boxB.hi, size);
       break;
+    case kindOf<Csg>: {
+      // The operation, the operands' count and what the node can cover (its
+      // operands come back in the order written, so their places too).
+      const Csg& na = a.shapes<Csg>()[ra.index];
+      const Csg& nb = b.shapes<Csg>()[rb.index];
+      c.same("csg operations", int(na.op), int(nb.op));
+      c.same("csg operand counts", na.operandCount, nb.operandCount);
+      c.same("csg first operands", na.firstOperand, nb.firstOperand);
+      if (!boxA.empty() && !boxB.empty()) {
+        c.near("csg bounds (lo)", boxA.lo, boxB.lo, size);
+        c.near("csg bounds (hi)", boxA.hi, boxB.hi, size);
+      }
+      break;
+    }
     }
   }
 }

@@ -271,7 +271,7 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
 
 TEST_F(Cli, RendersEveryShippedScene) {
   for (const char* name :
-       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc", "quadrics.sc"}) {
+       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc", "quadrics.sc", "csg.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
     const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");

@@ -172,6 +172,24 @@ long double surfaceDistance(const Triangle& tri, const ShapeArrays& arrays, cons
   return d / std::sqrt(n2);
 }
 
+// A CSG node's surface lies on its leaves' surfaces: the nearest of them.
+long double surfaceDistance(const Csg& node, const ShapeArrays& arrays, const Vec3& p) {
+  long double best = std::numeric_limits<long double>::infinity();
+  for (const CsgOperand& operand : operandsOf(node, arrays)) {
+    std::visit(
+        [&](const auto& s) {
+          long double d;
+          if constexpr (std::is_same_v<std::decay_t<decltype(s)>, CsgNodeIndex>)
+            d = surfaceDistance(arrays.csgNodes[s.index], arrays, p);
+          else
+            d = surfaceDistance(s, arrays, p);
+          best = std::min(best, std::abs(d));
+        },
+        operand.shape);
+  }
+  return best;
+}
+
 // One primitive of each kind, of size about 1 around the origin, each
 // sheared or tilted so that no coordinate is special.
 const char* const kOneOfEachKind[] = {
@@ -196,6 +214,9 @@ const char* const kOneOfEachKind[] = {
     "push rotate 1 2 3 30 scale 1 0.6 1.3 quadric 1 1 0 0 0 0 0 0 -1 0  -0.9 -0.8 -0.1  0.8 0.9 "
     "0.9 pop",
     "quadric 1 1 -1 0.2 0 0.1 0 0 0 -0.3  -0.9 -0.8 -0.7  0.8 0.9 0.6",
+    // CSG: a turned box with a sphere taken out of it.
+    "push rotate 1 2 3 30 csg difference box -0.9 -0.8 -0.7  0.8 0.9 0.6 "
+    "sphere 0.5 0.4 0.3 0.7 end pop",
 };
 
 // The largest |distance of the computed hit point from the surface| over

@@ -227,6 +227,25 @@ private:
          << " }\n";
   }
 
+  // POV-Ray's union, intersection and difference are Prism's: a
+  // difference takes the later objects from the first, and each object keeps
+  // its own material (the subtracted ones' shows on the surfaces they cut).
+  void one(const Csg& node) {
+    out_ << csgOpName(node.op) << " {\n";
+    for (const CsgOperand& operand : operandsOf(node, scene_.arrays())) {
+      out_ << "  ";
+      std::visit(
+          [&](const auto& shape) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, CsgNodeIndex>)
+              one(scene_.csgNodes[shape.index]);
+            else
+              one(shape);
+          },
+          operand.shape);
+    }
+    out_ << "}\n";
+  }
+
   // Triangles as POV-Ray meshes: one per run of triangles of one material
   // (a mesh has one material), which POV-Ray stores and bounds more cheaply
   // than as many separate objects.

@@ -51,6 +51,8 @@ constexpr int kMinResolution = 1;
 // bytes), so without a limit a file of nothing but `push` would need 80 times
 // its size in memory.
 constexpr std::size_t kMaxGroupDepth = 100000;
+// CSG blocks open at once: a node's tree is walked recursively for every ray.
+constexpr std::size_t kMaxCsgDepth = 1000;
 
 // ---------------------------------------------------------------------------
 // Parser
@@ -95,7 +97,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 26> kKeywords;
+  static const std::array<Keyword, 28> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -109,9 +111,12 @@ private:
 
   // What `push` saves and `pop` restores, besides the group and material
   // the builder saves.
+  // A `csg` block saves them too (its operation says so), and `end`
+  // restores them.
   struct Saved {
     Transform transform;
     Location pushedAt;
+    std::optional<CsgOp> csg; // a csg block rather than a push
   };
 
   void parseFile(std::string_view text, const std::string& name, const fs::path& identity,
@@ -160,6 +165,15 @@ private:
   // Transforms, groups and other files.
   void push(Command& c);
   void pop(Command& c);
+  // CSG blocks: `csg OPERATION` ... `end`.
+  void csg(Command& c);
+  void end(Command& c);
+  // An open shape inside a csg block: reported, its numbers skipped.
+  bool openInCsg(Command& c);
+  // The innermost push or csg block open in this file, or null.
+  const Saved* innermostInFile() const {
+    return saved_.size() > files_.back()->savedAtEntry ? &saved_.back() : nullptr;
+  }
   void translate(Command& c);
   void scale(Command& c);
   void rotate(Command& c);
@@ -195,7 +209,7 @@ private:
   std::vector<Vec3> vertices_; // scratch for polygon
 };
 
-const std::array<Parser::Keyword, 26> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 28> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -218,6 +232,8 @@ const std::array<Parser::Keyword, 26> Parser::kKeywords = {{
     {"quadric", &Parser::quadric},
     {"push", &Parser::push},
     {"pop", &Parser::pop},
+    {"csg", &Parser::csg},
+    {"end", &Parser::end},
     {"translate", &Parser::translate},
     {"scale", &Parser::scale},
     {"rotate", &Parser::rotate},
@@ -283,12 +299,17 @@ void Parser::closeOpenPushes() {
   const std::size_t base = file().savedAtEntry;
   if (saved_.size() == base) return;
   for (std::size_t i = base; i < saved_.size(); ++i) {
-    report(saved_[i].pushedAt, "push without matching pop");
+    report(saved_[i].pushedAt,
+           saved_[i].csg ? "csg without matching end" : "push without matching pop");
   }
   transform_ = saved_[base].transform;
-  saved_.resize(base);
-  while (build_.openPushes() > base)
-    build_.pop();
+  while (saved_.size() > base) {
+    if (saved_.back().csg)
+      build_.endCsg();
+    else
+      build_.pop();
+    saved_.pop_back();
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -424,6 +445,7 @@ void Parser::addPlaced(Command& c, Shape shape, const char* name, bool mapWritte
 }
 
 void Parser::polygon(Command& c) {
+  if (openInCsg(c)) return;
   const std::optional<std::uint64_t> count = vertexCount(c);
   if (!count) return;
   vertices_.clear();
@@ -453,6 +475,7 @@ void Parser::polygon(Command& c) {
 void Parser::cone(Command& c) {
   static constexpr const char* kNames[] = {"BX", "BY", "BZ", "BR", "AX", "AY", "AZ", "AR"};
   Arg a[8];
+  if (c.name == "cone" && openInCsg(c)) return;
   if (!numbers(c, kNames, a)) return;
   for (const int i : {3, 7}) {
     if (a[i].value < 0.0) invalid(c, a[i].token, "negative radius " + quoted(a[i].token.text));
@@ -527,6 +550,7 @@ void Parser::box(Command& c) {
 }
 
 void Parser::disc(Command& c) {
+  if (openInCsg(c)) return;
   static constexpr const char* kNames[] = {"CX", "CY", "CZ", "NX", "NY", "NZ", "R"};
   Arg a[7];
   if (!numbers(c, kNames, a)) return;
@@ -610,6 +634,7 @@ void Parser::torus(Command& c) {
 }
 
 void Parser::triangle(Command& c) {
+  if (openInCsg(c)) return;
   static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "X2", "Y2", "Z2", "X3", "Y3", "Z3"};
   Arg a[9];
   if (!numbers(c, kNames, a) || !c.valid) return;
@@ -617,6 +642,7 @@ void Parser::triangle(Command& c) {
 }
 
 void Parser::ptriangle(Command& c) {
+  if (openInCsg(c)) return;
   static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "NX1", "NY1", "NZ1",
                                            "X2", "Y2", "Z2", "NX2", "NY2", "NZ2",
                                            "X3", "Y3", "Z3", "NX3", "NY3", "NZ3"};
@@ -679,11 +705,16 @@ void Parser::push(Command& c) {
     error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
     throw StopReading{};
   }
-  saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column}});
+  saved_.push_back(
+      {transform_, Location{file().name, c.keyword.line, c.keyword.column}, std::nullopt});
   build_.push(origin(c));
 }
 
 void Parser::pop(Command& c) {
+  if (const Saved* open = innermostInFile(); open != nullptr && open->csg) {
+    error(c.keyword, "pop without matching push (a csg block is open: close it with 'end' first)");
+    return;
+  }
   if (saved_.size() == file().savedAtEntry) {
     error(c.keyword, saved_.empty() ? "pop without matching push"
                                     : "pop without matching push in this file (push and pop "
@@ -693,6 +724,66 @@ void Parser::pop(Command& c) {
   transform_ = saved_.back().transform;
   saved_.pop_back();
   build_.pop();
+}
+
+bool Parser::openInCsg(Command& c) {
+  if (!build_.inCsg()) return false;
+  error(c.keyword, c.name +
+                       ": not a closed solid, so it cannot be an operand of csg (spheres, boxes, "
+                       "cylinders, capped cones, tori and csg blocks can)");
+  skipNumbers();
+  return true;
+}
+
+void Parser::csg(Command& c) {
+  const Token word = file().lexer.peek();
+  std::optional<CsgOp> op;
+  for (const CsgOp o : {CsgOp::Union, CsgOp::Intersection, CsgOp::Difference}) {
+    if (word.text == csgOpName(o)) op = o;
+  }
+  if (!op) {
+    // Still a block (a union), so its operands and `end` read as such.
+    error(word.atEnd() ? c.keyword : word,
+          "csg: expected union, intersection or difference but " +
+              (word.atEnd() ? std::string("reached the end of the file")
+                            : "found " + quoted(word.text)));
+    if (!word.atEnd() && !startsCommand(word.text)) file().lexer.next();
+    skipNumbers();
+  } else {
+    file().lexer.next();
+  }
+  if (build_.openCsgs() >= kMaxCsgDepth) {
+    error(c.keyword, "csg: blocks nested more than " + std::to_string(kMaxCsgDepth) + " deep");
+    throw StopReading{};
+  }
+  const CsgOp operation = op.value_or(CsgOp::Union);
+  saved_.push_back(
+      {transform_, Location{file().name, c.keyword.line, c.keyword.column}, operation});
+  build_.beginCsg(operation, origin(c));
+}
+
+void Parser::end(Command& c) {
+  const Saved* open = innermostInFile();
+  if (open == nullptr) {
+    error(c.keyword, saved_.empty() || !saved_.back().csg
+                         ? "end without matching csg"
+                         : "end without matching csg in this file (csg and end must balance "
+                           "within each file)");
+    return;
+  }
+  if (!open->csg) {
+    error(c.keyword, "end without matching csg (a push is open: close it with 'pop' first)");
+    return;
+  }
+  const Location at = open->pushedAt;
+  const CsgOp op = *open->csg;
+  transform_ = open->transform;
+  saved_.pop_back();
+  const std::size_t count = build_.endCsg();
+  if (count < 2) {
+    report(at, std::string("csg ") + csgOpName(op) + ": needs at least two operands, found " +
+                   std::to_string(count));
+  }
 }
 
 // Composes `t` onto the current transform unless the result is no longer usable

@@ -81,10 +81,40 @@ private:
     current_ = m;
   }
 
-  // Each kind's text is written by its own file (core/io/shape_text/).
+  // Each kind's text is written by its own file (core/io/shape_text/); a
+  // CSG node's here, for its operands' materials.
   void primitive(const PrimitiveRef& ref, int depth) {
+    if (ref.kind == kindOf<Csg>) {
+      csg(scene_.shapes<Csg>()[ref.index], depth);
+      return;
+    }
     material(scene_.material(ref), depth);
-    scene_.visit(ref, [&](const auto& shape) { sc::write(text_, shape, depth); });
+    scene_.visit(ref, [&](const auto& shape) {
+      if constexpr (!std::is_same_v<std::decay_t<decltype(shape)>, Csg>)
+        sc::write(text_, shape, depth);
+    });
+  }
+
+  // `csg OPERATION`, each operand after its material, `end`: the block
+  // restores the material it began with, as the reader does.
+  void csg(const Csg& node, int depth) {
+    material(scene_.materials[node.material], depth);
+    const Material saved = current_;
+    line(depth) << "csg " << csgOpName(node.op) << "\n";
+    for (const CsgOperand& operand : operandsOf(node, scene_.arrays())) {
+      std::visit(
+          [&](const auto& shape) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, CsgNodeIndex>) {
+              csg(scene_.csgNodes[shape.index], depth + 1);
+            } else {
+              material(scene_.materials[shape.material], depth + 1);
+              sc::write(text_, shape, depth + 1);
+            }
+          },
+          operand.shape);
+    }
+    line(depth) << "end\n";
+    current_ = saved;
   }
 
   std::ostream& out_;

@@ -156,7 +156,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   const Vec3 point = ray.at(hit.t);
   // The ray tree shows the surface coordinates; rendering needs none yet.
   const SurfacePoint surface =
-      scene_.surfaceAt(hit.primitive, point,
+      scene_.surfaceAt(hit.primitive, ray, hit.t,
                        record != nullptr ? SurfaceDetail::WithCoordinates : SurfaceDetail::Shading);
   const Material& m = scene_.materialAt(surface);
   // Leaving iff N.D > 0; shade with the normal facing the ray.

@@ -38,6 +38,10 @@ struct Scene {
   std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices
   std::vector<Vec3> meshVertices;                   // shared by triangles (Triangle::vertex)
   std::vector<Vec3> meshNormals;                    // unit vertex normals of smooth triangles
+  // The operands of every CSG node and the nested nodes (csg.h); the roots
+  // are primitives, in shapes<Csg>().
+  std::vector<CsgOperand> csgOperands;
+  std::vector<Csg> csgNodes;
   std::vector<Group> groups{Group{}};
   std::vector<std::string> files; // files[0] is the main scene file
 
@@ -52,7 +56,7 @@ struct Scene {
   }
   // The arrays shapes index into, as the shape functions take them.
   ShapeArrays arrays() const {
-    return {polygonVertices, polygonEdgeIndices, meshVertices, meshNormals};
+    return {polygonVertices, polygonEdgeIndices, meshVertices, meshNormals, csgOperands, csgNodes};
   }
 
   // Calls f with the shape `ref` names, as its own type: the one place that
@@ -70,6 +74,12 @@ struct Scene {
   // (Inline: the tracer calls it for every hit, and what it does not use of
   // the record is then never stored.)
   SurfacePoint surfaceAt(PrimitiveRef ref, const Vec3& point,
+                         SurfaceDetail detail = SurfaceDetail::Shading) const;
+  // The same where `ray` hits the primitive at `t` (the tracer's way in):
+  // exact for kinds whose record depends on how the point was reached (a CSG
+  // node's operand, see csg.h), and for every other kind surfaceAt at
+  // ray.at(t).
+  SurfacePoint surfaceAt(PrimitiveRef ref, const Ray& ray, double t,
                          SurfaceDetail detail = SurfaceDetail::Shading) const;
   // The material at a surface point: the one place shading looks it up. The
   // values are constant per primitive today, so this is a reference into the
@@ -102,10 +112,19 @@ inline SurfacePoint Scene::surfaceAt(PrimitiveRef ref, const Vec3& point,
                                      SurfaceDetail detail) const {
   return visit(ref, [&](const auto& shape) {
     SurfacePoint surface = prism::surfaceAt(shape, arrays(), point);
-    surface.material = shape.material;
+    // A CSG node's record carries its operand's material.
+    if constexpr (!std::is_same_v<std::decay_t<decltype(shape)>, Csg>)
+      surface.material = shape.material;
     if (detail == SurfaceDetail::WithCoordinates) surface.uv = uvAt(shape, arrays(), point);
     return surface;
   });
+}
+
+inline SurfacePoint Scene::surfaceAt(PrimitiveRef ref, const Ray& ray, double t,
+                                     SurfaceDetail detail) const {
+  if (ref.kind == kindOf<Csg>)
+    return surfaceAlong(shapes<Csg>()[ref.index], arrays(), ray, t, detail);
+  return surfaceAt(ref, ray.at(t), detail);
 }
 
 } // namespace prism

@@ -13,7 +13,9 @@ std::uint32_t SceneBuilder::addGroup(std::uint32_t parent, Origin origin) {
 
 std::uint32_t SceneBuilder::push(Origin origin) {
   saved_.push_back({group_, current_, currentIndex_});
-  group_ = addGroup(group_, origin);
+  // Inside a CSG node the shapes are its operands, in no group: a push there
+  // scopes the material (and the reader's transform) only.
+  if (csgOpen_.empty()) group_ = addGroup(group_, origin);
   return group_;
 }
 
@@ -86,6 +88,37 @@ std::optional<PrimitiveRef> SceneBuilder::meshTriangle(std::array<std::uint32_t,
 std::uint32_t SceneBuilder::addFile(std::string name) {
   scene_.files.push_back(std::move(name));
   return std::uint32_t(scene_.files.size() - 1);
+}
+
+void SceneBuilder::beginCsg(CsgOp op, Origin origin) {
+  const std::uint32_t nodeMaterial = currentMaterial();
+  csgOpen_.push_back({op, origin, nodeMaterial, {}, {group_, current_, currentIndex_}});
+}
+
+std::size_t SceneBuilder::endCsg() {
+  OpenCsg open = std::move(csgOpen_.back());
+  csgOpen_.pop_back();
+  current_ = open.saved.material;
+  currentIndex_ = open.saved.materialIndex;
+  const std::size_t count = open.operands.size();
+  if (count < 2) return count;
+  Csg node;
+  node.op = open.op;
+  node.firstOperand = std::uint32_t(scene_.csgOperands.size());
+  node.operandCount = std::uint32_t(count);
+  node.material = open.material;
+  node.origin = open.origin;
+  scene_.csgOperands.insert(scene_.csgOperands.end(), open.operands.begin(), open.operands.end());
+  finishCsg(node, scene_.arrays());
+  if (!csgOpen_.empty()) {
+    scene_.csgNodes.push_back(node);
+    csgOpen_.back().operands.push_back(
+        CsgOperand{CsgNodeIndex{std::uint32_t(scene_.csgNodes.size() - 1)}});
+  } else {
+    scene_.shapes<Csg>().push_back(node);
+    inGroup({kindOf<Csg>, std::uint32_t(scene_.shapes<Csg>().size() - 1)});
+  }
+  return count;
 }
 
 } // namespace prism

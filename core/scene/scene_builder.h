@@ -67,8 +67,16 @@ public:
 
   // A kind that needs none of the scene's arrays (sphere, ellipsoid, cone),
   // with its material and origin already set.
+  // Inside a CSG node (beginCsg), a closed kind becomes the node's next
+  // operand instead, and the reference returned names no primitive.
   template <class Kind>
   requires SelfContainedShape<Kind> PrimitiveRef add(const Kind& shape) {
+    if constexpr (std::is_constructible_v<decltype(CsgOperand::shape), Kind>) {
+      if (!csgOpen_.empty()) {
+        csgOpen_.back().operands.push_back(CsgOperand{shape});
+        return {kindOf<Csg>, kNoPrimitive};
+      }
+    }
     std::vector<Kind>& shapes = scene_.shapes<Kind>();
     shapes.push_back(shape);
     return inGroup({kindOf<Kind>, std::uint32_t(shapes.size() - 1)});
@@ -94,6 +102,20 @@ public:
                                            const std::array<std::uint32_t, 3>* normals,
                                            std::uint32_t material, Origin origin);
 
+  // --- CSG nodes (core/shapes/csg.h)
+
+  // Opens a node: until the matching endCsg, closed shapes added are its
+  // operands (and nodes closed inside it, nested operands). The current
+  // material is saved, as by push.
+  void beginCsg(CsgOp op, Origin origin);
+  bool inCsg() const { return !csgOpen_.empty(); }
+  std::size_t openCsgs() const { return csgOpen_.size(); }
+  // Closes the innermost node and restores the material: a root becomes a
+  // primitive of the current group, a nested node an operand of the one
+  // around it. Returns the count of its operands; with fewer than two the
+  // node is dropped (the reader reports it).
+  std::size_t endCsg();
+
   // --- Lights and files
 
   void addLight(const Light& light) { scene_.lights.push_back(light); }
@@ -113,7 +135,17 @@ private:
     std::optional<std::uint32_t> materialIndex;
   };
 
+  static constexpr std::uint32_t kNoPrimitive = ~std::uint32_t(0);
+  struct OpenCsg {
+    CsgOp op;
+    Origin origin;
+    std::uint32_t material; // the node's
+    std::vector<CsgOperand> operands;
+    Saved saved; // the material to restore (its group is unused)
+  };
+
   Scene& scene_;
+  std::vector<OpenCsg> csgOpen_;
   MaterialTable materials_;
   Material current_;
   std::optional<std::uint32_t> currentIndex_; // current_ interned, once a primitive used it

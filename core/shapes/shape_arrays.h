@@ -1,6 +1,7 @@
 // The arrays of a scene that shapes index into rather than hold: polygon
-// vertices and edge indices, mesh vertices and vertex normals. A view, cheap
-// to pass; the Scene owns the storage.
+// vertices and edge indices, mesh vertices and vertex normals, CSG operands
+// and nested CSG nodes (csg.h). A view, cheap to pass; the Scene owns the
+// storage.
 #pragma once
 
 #include "core/math/math.h"
@@ -10,12 +11,16 @@
 namespace prism {
 
 class PolygonEdgeIndex;
+struct Csg;
+struct CsgOperand;
 
 struct ShapeArrays {
   std::span<const Vec3> polygonVertices;
   std::span<const PolygonEdgeIndex> polygonEdgeIndices;
   std::span<const Vec3> meshVertices;
-  std::span<const Vec3> meshNormals; // unit vertex normals of smooth triangles
+  std::span<const Vec3> meshNormals;       // unit vertex normals of smooth triangles
+  std::span<const CsgOperand> csgOperands; // the operands of every CSG node
+  std::span<const Csg> csgNodes;           // the nested (not top-level) CSG nodes
 };
 
 } // namespace prism

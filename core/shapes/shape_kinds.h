@@ -19,7 +19,10 @@
 // (a kind that needs none of the ShapeArrays may provide intersect, normalAt,
 // uvAt and boundsOf without them instead: see SelfContainedShape). A kind
 // that bounds a solid also lists every crossing of a ray (ClosedShape in
-// crossings.h), which CSG needs.
+// crossings.h), which CSG needs. A kind whose record depends on more than
+// the point (a CSG node: which operand was hit) also provides
+//   SurfacePoint surfaceAlong(..., const Ray&, double t, SurfaceDetail)
+// which Scene::surfaceAt(ref, ray, t) prefers (see csg.h).
 // Adding a kind: its file, an entry at the end of ShapeKinds (the order is
 // the tie-break between coincident surfaces: existing scenes keep their
 // pictures), a reader handler and a writer overload (see docs/architecture.md).
@@ -28,6 +31,7 @@
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
+#include "core/shapes/csg.h"
 #include "core/shapes/disc.h"
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/polygon.h"
@@ -97,8 +101,8 @@ template <ShapeKind... Kinds> struct ShapeList {
   static constexpr std::array<bool, size> flat{Kinds::kFlat...};
 };
 
-using ShapeKinds =
-    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone, Quadric>;
+using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc,
+                             CappedCone, Quadric, Csg>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

@@ -283,6 +283,51 @@ TEST(Accel, SlicedConesMatchBruteForce) {
   EXPECT_GT(tally.ties, 10); // the doubled bars
 }
 
+// Blobs (one primitive of several components, some negative) among spheres,
+// in nested groups: rays at the components' centres and at random, and
+// secondary rays from the points they hit.
+TEST(Accel, BlobsMatchBruteForce) {
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Scene scene;
+  const std::uint32_t mat = addMaterial(scene, Material{});
+  for (int g = 1; g <= 6; ++g)
+    addGroup(scene, std::uint32_t(g / 2));
+  std::vector<Vec3> centres;
+  for (int i = 0; i < 60; ++i) {
+    const std::uint32_t g = std::uint32_t(i % 7);
+    const Vec3 c(6 * u(rng), 6 * u(rng), 6 * u(rng));
+    if (i % 10 == 9) {
+      addSphere(scene, c, 0.5, mat, g);
+      continue;
+    }
+    std::vector<BlobComponent> components;
+    for (int k = 0; k < 1 + i % 4; ++k) {
+      components.push_back({c + 0.6 * Vec3(u(rng), u(rng), u(rng)), 0.4 + 0.5 * std::abs(u(rng)),
+                            k == 3 ? -0.5 : 1.0});
+      centres.push_back(components.back().center);
+    }
+    const Mat3 linear = i % 3 == 0 ? Mat3(1.0) : Mat3(Vec3(1, 0.2, 0), Vec3(0, 0.7, 0.1), Vec3(0.3, 0, 1.2));
+    PlacedBlob placed = makeBlob(components, 0.4, linear, c - linear * c);
+    placed.blob.material = mat;
+    addIn(scene, g, [&](SceneBuilder& build) { return build.blob(placed); });
+  }
+  const auto accels = accelerated(scene);
+  const auto brute = makeAccel(scene, AccelKind::None);
+  std::uniform_int_distribution<std::size_t> pick(0, centres.size() - 1);
+  Tally tally;
+  for (int i = 0; i < 2000; ++i) {
+    Ray ray{Vec3(12 * u(rng), 12 * u(rng), 12 * u(rng)), randomDirection(rng)};
+    if (i % 2 == 0) ray.dir = glm::normalize(centres[pick(rng)] - ray.origin);
+    const Interval range = variedRange(i, rng);
+    Hit h;
+    if (!expectSameHit(scene, accels, *brute, ray, range, nullptr, tally, &h)) continue;
+    expectSameHit(scene, accels, *brute, Ray{ray.at(h.t), randomDirection(rng)}, Interval{},
+                  nullptr, tally);
+  }
+  EXPECT_GT(tally.hits, 800);
+}
+
 // Tori (whose test isolates a quartic's roots) among spheres, in nested
 // groups, some interlocked: rays aimed through the holes (at the centres), at
 // the inner rims, and secondary rays from the points they hit, in every

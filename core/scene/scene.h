@@ -38,6 +38,7 @@ struct Scene {
   std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices
   std::vector<Vec3> meshVertices;                   // shared by triangles (Triangle::vertex)
   std::vector<Vec3> meshNormals;                    // unit vertex normals of smooth triangles
+  std::vector<BlobComponent> blobComponents;        // of the blobs (Blob::firstComponent)
   std::vector<Group> groups{Group{}};
   std::vector<std::string> files; // files[0] is the main scene file
 
@@ -52,7 +53,7 @@ struct Scene {
   }
   // The arrays shapes index into, as the shape functions take them.
   ShapeArrays arrays() const {
-    return {polygonVertices, polygonEdgeIndices, meshVertices, meshNormals};
+    return {polygonVertices, polygonEdgeIndices, meshVertices, meshNormals, blobComponents};
   }
 
   // Calls f with the shape `ref` names, as its own type: the one place that

@@ -1,5 +1,6 @@
 // The arrays of a scene that shapes index into rather than hold: polygon
-// vertices and edge indices, mesh vertices and vertex normals. A view, cheap
+// vertices and edge indices, mesh vertices and vertex normals, blob
+// components. A view, cheap
 // to pass; the Scene owns the storage.
 #pragma once
 
@@ -10,12 +11,14 @@
 namespace prism {
 
 class PolygonEdgeIndex;
+struct BlobComponent;
 
 struct ShapeArrays {
   std::span<const Vec3> polygonVertices;
   std::span<const PolygonEdgeIndex> polygonEdgeIndices;
   std::span<const Vec3> meshVertices;
   std::span<const Vec3> meshNormals; // unit vertex normals of smooth triangles
+  std::span<const BlobComponent> blobComponents;
 };
 
 } // namespace prism

@@ -25,6 +25,7 @@
 // pictures), a reader handler and a writer overload (see docs/architecture.md).
 #pragma once
 
+#include "core/shapes/blob.h"
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
@@ -97,7 +98,7 @@ template <ShapeKind... Kinds> struct ShapeList {
 };
 
 using ShapeKinds =
-    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone>;
+    ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone, Blob>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

@@ -49,5 +49,6 @@ void write(TextOut& text, const Torus& t, int depth);
 void write(TextOut& text, const CappedCone& c, int depth);
 void write(TextOut& text, const Box& b, int depth);
 void write(TextOut& text, const Disc& d, int depth);
+void write(TextOut& text, const Blob& b, int depth);
 
 } // namespace prism::sc

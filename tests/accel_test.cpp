@@ -307,7 +307,8 @@ TEST(Accel, BlobsMatchBruteForce) {
                             k == 3 ? -0.5 : 1.0});
       centres.push_back(components.back().center);
     }
-    const Mat3 linear = i % 3 == 0 ? Mat3(1.0) : Mat3(Vec3(1, 0.2, 0), Vec3(0, 0.7, 0.1), Vec3(0.3, 0, 1.2));
+    const Mat3 linear =
+        i % 3 == 0 ? Mat3(1.0) : Mat3(Vec3(1, 0.2, 0), Vec3(0, 0.7, 0.1), Vec3(0.3, 0, 1.2));
     PlacedBlob placed = makeBlob(components, 0.4, linear, c - linear * c);
     placed.blob.material = mat;
     addIn(scene, g, [&](SceneBuilder& build) { return build.blob(placed); });

@@ -75,6 +75,16 @@ public:
 private:
   void piece(const double (&b)[5], double ua, double ub, int depth) {
     if (stopped_) return;
+    if (ta_ + ua * h_ >= range_.max) {
+      stopped_ = true;
+      return;
+    }
+    if (ta_ + ub * h_ <= range_.min) {
+      // Nothing to report: only the side at its end, which is where every
+      // way below leaves the walk.
+      inside_ = b[4] >= 0.0;
+      return;
+    }
     const auto [lo, hi] = std::minmax({b[0], b[1], b[2], b[3], b[4]});
     if (lo > err_ || hi < -err_) { // the sign is proven
       settle(lo > err_, ua);
@@ -228,7 +238,9 @@ void visitBlobCrossings(const Blob& b, std::span<const BlobComponent> components
   if (!(dd > 0.0) || !std::isfinite(dd)) return;
 
   // Where the line meets each component's sphere, from its point nearest the
-  // centre (stable for far-away origins), clipped to the range.
+  // centre (stable for far-away origins). Not clipped to the range: the
+  // stretches, and so the roots' round-off, are the same for every range,
+  // so a query up to a crossing's t does not find it again a hair earlier.
   std::vector<Event>& events = tEvents;
   events.clear();
   for (std::uint32_t i = 0; i < components.size(); ++i) {
@@ -239,7 +251,7 @@ void visitBlobCrossings(const Blob& b, std::span<const BlobComponent> components
     const double h2 = (c.radius - glm::length(nearest)) * (c.radius + glm::length(nearest));
     if (!(h2 > 0.0)) continue;
     const double half = std::sqrt(h2 / dd);
-    const double t0 = std::max(tm - half, range.min), t1 = std::min(tm + half, range.max);
+    const double t0 = tm - half, t1 = tm + half;
     if (!(t0 < t1)) continue;
     events.push_back({t0, i, true});
     events.push_back({t1, i, false});
@@ -252,6 +264,7 @@ void visitBlobCrossings(const Blob& b, std::span<const BlobComponent> components
   active.clear();
   double from = events.front().t;
   for (const Event& e : events) {
+    if (from >= range.max) return;
     if (e.t > from && !active.empty()) {
       // The stretch [from, e.t]: the active components' polynomial in u.
       double positive = 0.0;

@@ -120,6 +120,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const EmbreeOptions& options) {
   addUser(kindOf<Box>, scene.shapes<Box>().size());
   addUser(kindOf<Disc>, scene.shapes<Disc>().size());
   addUser(kindOf<CappedCone>, scene.shapes<CappedCone>().size());
+  addUser(kindOf<Blob>, scene.shapes<Blob>().size());
   check(device_, "building the geometry");
 
   const auto start = std::chrono::steady_clock::now();

@@ -84,6 +84,7 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("csg counts", a.shapes<Csg>().size(), b.shapes<Csg>().size());
   c.same("csg operand counts", a.csgOperands.size(), b.csgOperands.size());
   c.same("nested csg counts", a.csgNodes.size(), b.csgNodes.size());
+  c.same("blob counts", a.shapes<Blob>().size(), b.shapes<Blob>().size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;
@@ -135,6 +136,25 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
       c.same("quadric clip boxes (hi)", qa.hi, qb.hi);
       c.near("quadric bounds (lo)", boxA.lo, boxB.lo, size);
       c.near("quadric bounds (hi)", boxA.hi, boxB.hi, size);
+      break;
+    }
+    case kindOf<Blob>: {
+      // The components as stored (in the world, or in the frame of a
+      // stretched blob) are written exactly; a frame through its map.
+      const Blob& ba = a.shapes<Blob>()[ra.index];
+      const Blob& bb = b.shapes<Blob>()[rb.index];
+      c.same("blob thresholds", ba.threshold, bb.threshold);
+      c.same("blob frames", ba.placed, bb.placed);
+      c.same("blob component counts", ba.componentCount, bb.componentCount);
+      for (std::uint32_t i = 0; i < std::min(ba.componentCount, bb.componentCount); ++i) {
+        const BlobComponent& ca = a.blobComponents[ba.firstComponent + i];
+        const BlobComponent& cb = b.blobComponents[bb.firstComponent + i];
+        c.same("blob component centres", ca.center, cb.center);
+        c.same("blob component radii", ca.radius, cb.radius);
+        c.same("blob component strengths", ca.strength, cb.strength);
+      }
+      c.near("blob bounds (lo)", boxA.lo, boxB.lo, size);
+      c.near("blob bounds (hi)", boxA.hi, boxB.hi, size);
       break;
     }
     case kindOf<Ellipsoid>:

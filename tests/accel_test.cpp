@@ -189,6 +189,27 @@ std::vector<std::unique_ptr<Accel>> accelerated(const Scene& scene) {
   return accels;
 }
 
+// A scene of one material and groups 1 to 6 nested below the top level
+// (group g's parent is g / 2), for the tests of one kind below.
+Scene nestedGroups(std::uint32_t& material) {
+  Scene scene;
+  material = addMaterial(scene, Material{});
+  for (int g = 1; g <= 6; ++g)
+    addGroup(scene, std::uint32_t(g / 2));
+  return scene;
+}
+
+// The query over `range`, and when it hits, a secondary ray from the hit
+// point in a random direction.
+void expectSameHitAndFromIt(const Scene& scene, const std::vector<std::unique_ptr<Accel>>& accels,
+                            const Accel& brute, const Ray& ray, Interval range, std::mt19937& rng,
+                            Tally& tally) {
+  Hit h;
+  if (!expectSameHit(scene, accels, brute, ray, range, nullptr, tally, &h)) return;
+  expectSameHit(scene, accels, brute, Ray{ray.at(h.t), randomDirection(rng)}, Interval{}, nullptr,
+                tally);
+}
+
 TEST(Accel, EveryModeMatchesBruteForceOnRandomRays) {
   std::mt19937 rng(4004);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -283,6 +304,46 @@ TEST(Accel, SlicedConesMatchBruteForce) {
   EXPECT_GT(tally.ties, 10); // the doubled bars
 }
 
+// Blobs (one primitive of several components, some negative) among spheres,
+// in nested groups: rays at the components' centres and at random, and
+// secondary rays from the points they hit.
+TEST(Accel, BlobsMatchBruteForce) {
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uint32_t mat = 0;
+  Scene scene = nestedGroups(mat);
+  std::vector<Vec3> centres;
+  for (int i = 0; i < 60; ++i) {
+    const std::uint32_t g = std::uint32_t(i % 7);
+    const Vec3 c(6 * u(rng), 6 * u(rng), 6 * u(rng));
+    if (i % 10 == 9) {
+      addSphere(scene, c, 0.5, mat, g);
+      continue;
+    }
+    std::vector<BlobComponent> components;
+    for (int k = 0; k < 1 + i % 4; ++k) {
+      components.push_back({c + 0.6 * Vec3(u(rng), u(rng), u(rng)), 0.4 + 0.5 * std::abs(u(rng)),
+                            k == 3 ? -0.5 : 1.0});
+      centres.push_back(components.back().center);
+    }
+    const Mat3 linear =
+        i % 3 == 0 ? Mat3(1.0) : Mat3(Vec3(1, 0.2, 0), Vec3(0, 0.7, 0.1), Vec3(0.3, 0, 1.2));
+    PlacedBlob placed = makeBlob(components, 0.4, linear, c - linear * c);
+    placed.blob.material = mat;
+    addIn(scene, g, [&](SceneBuilder& build) { return build.blob(placed); });
+  }
+  const auto accels = accelerated(scene);
+  const auto brute = makeAccel(scene, AccelKind::None);
+  std::uniform_int_distribution<std::size_t> pick(0, centres.size() - 1);
+  Tally tally;
+  for (int i = 0; i < 2000; ++i) {
+    Ray ray{Vec3(12 * u(rng), 12 * u(rng), 12 * u(rng)), randomDirection(rng)};
+    if (i % 2 == 0) ray.dir = glm::normalize(centres[pick(rng)] - ray.origin);
+    expectSameHitAndFromIt(scene, accels, *brute, ray, variedRange(i, rng), rng, tally);
+  }
+  EXPECT_GT(tally.hits, 800);
+}
+
 // Tori (whose test isolates a quartic's roots) among spheres, in nested
 // groups, some interlocked: rays aimed through the holes (at the centres), at
 // the inner rims, and secondary rays from the points they hit, in every
@@ -290,10 +351,8 @@ TEST(Accel, SlicedConesMatchBruteForce) {
 TEST(Accel, ToriMatchBruteForce) {
   std::mt19937 rng(15);
   std::uniform_real_distribution<double> u(-1, 1);
-  Scene scene;
-  const std::uint32_t mat = addMaterial(scene, Material{});
-  for (int g = 1; g <= 6; ++g)
-    addGroup(scene, std::uint32_t(g / 2));
+  std::uint32_t mat = 0;
+  Scene scene = nestedGroups(mat);
   std::vector<Vec3> rims;
   for (int i = 0; i < 120; ++i) {
     const std::uint32_t g = std::uint32_t(i % 7);
@@ -321,11 +380,7 @@ TEST(Accel, ToriMatchBruteForce) {
                     : i % 3 == 1 ? rims[rim(rng)] + 1e-9 * randomUnit(rng)
                                  : ray.origin + ray.dir;
     if (to != ray.origin) ray.dir = glm::normalize(to - ray.origin);
-    const Interval range = variedRange(i, rng);
-    Hit h;
-    if (!expectSameHit(scene, accels, *brute, ray, range, nullptr, tally, &h)) continue;
-    expectSameHit(scene, accels, *brute, Ray{ray.at(h.t), randomDirection(rng)}, Interval{},
-                  nullptr, tally);
+    expectSameHitAndFromIt(scene, accels, *brute, ray, variedRange(i, rng), rng, tally);
   }
   EXPECT_GT(tally.hits, 1500);
 }

@@ -92,6 +92,28 @@ long double surfaceDistance(const Torus& t, const ShapeArrays&, const Vec3& p) {
                        });
 }
 
+// The field minus the threshold over its gradient's length.
+long double surfaceDistance(const Blob& b, const ShapeArrays& arrays, const Vec3& p) {
+  return frameDistance(b.frame.worldToObject, b.frame.worldToObjectOffset, p,
+                       [&](const long double* q, long double* g) {
+                         long double field = -(long double)b.threshold;
+                         g[0] = g[1] = g[2] = 0;
+                         for (const BlobComponent& c : componentsOf(b, arrays)) {
+                           long double w[3], w2 = 0;
+                           for (int i = 0; i < 3; ++i) {
+                             w[i] = (q[i] - c.center[i]) / c.radius;
+                             w2 += w[i] * w[i];
+                           }
+                           const long double k = 1 - w2;
+                           if (!(k > 0)) continue;
+                           field += c.strength * k * k;
+                           for (int i = 0; i < 3; ++i)
+                             g[i] -= 4 * c.strength * k * w[i] / c.radius;
+                         }
+                         return field;
+                       });
+}
+
 // The distance from the nearest of the planes q[axis] = at of a frame.
 long double framePlanesDistance(const Mat3& w, const Vec3& w0, const Vec3& p,
                                 std::initializer_list<std::pair<int, double>> planes) {
@@ -217,6 +239,9 @@ const char* const kOneOfEachKind[] = {
     // CSG: a turned box with a sphere taken out of it.
     "push rotate 1 2 3 30 csg difference box -0.9 -0.8 -0.7  0.8 0.9 0.6 "
     "sphere 0.5 0.4 0.3 0.7 end pop",
+    // Blobs: three components, one subtracting; then rotated and stretched.
+    "blob 0.5 3  -0.3 0 0.1  0.8 1  0.4 0.1 0  0.7 1  0 0.3 0.2  0.4 -0.5",
+    "push rotate 1 2 3 30 scale 1 0.3 2 blob 0.5 2  -0.3 0 0.1  0.8 1  0.4 0.1 0  0.7 1 pop",
 };
 
 // The largest |distance of the computed hit point from the surface| over

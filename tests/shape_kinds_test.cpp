@@ -63,16 +63,16 @@ static_assert(!ShapeKind<Unbounded>);
 static_assert(!ShapeKind<Uncharted>);
 // The kinds that bound a solid list every crossing; the open ones do not.
 static_assert(ClosedShape<Sphere> && ClosedShape<Ellipsoid> && ClosedShape<Torus> &&
-              ClosedShape<Box> && ClosedShape<CappedCone> && ClosedShape<Csg>);
+              ClosedShape<Box> && ClosedShape<CappedCone> && ClosedShape<Csg> && ClosedShape<Blob>);
 static_assert(!ClosedShape<Polygon> && !ClosedShape<Cone> && !ClosedShape<Triangle> &&
               !ClosedShape<Disc> && !ClosedShape<Quadric>);
 static_assert(ShapeKind<Sphere> && ShapeKind<Ellipsoid> && ShapeKind<Polygon> && ShapeKind<Cone> &&
               ShapeKind<Triangle> && ShapeKind<Torus> && ShapeKind<Box> && ShapeKind<Disc> &&
-              ShapeKind<CappedCone> && ShapeKind<Quadric> && ShapeKind<Csg>);
+              ShapeKind<CappedCone> && ShapeKind<Quadric> && ShapeKind<Csg> && ShapeKind<Blob>);
 
 // A list with the made-up kind appended: its name and flatness come along.
 using Extended = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc, CappedCone,
-                           Quadric, Csg, TestBox>;
+                           Quadric, Csg, Blob, TestBox>;
 static_assert(Extended::size == kShapeKindCount + 1);
 static_assert(std::is_same_v<Extended::At<kShapeKindCount>, TestBox>);
 
@@ -81,7 +81,7 @@ TEST(ShapeKinds, NamesAndFlatnessFollowTheList) {
   EXPECT_FALSE(Extended::flat[kShapeKindCount]);
   // The real list: names as messages print them, flat exactly for the planar kinds.
   const std::string names[] = {"sphere", "ellipsoid", "polygon",     "cone",    "triangle", "torus",
-                               "box",    "disc",      "capped_cone", "quadric", "csg"};
+                               "box",    "disc",      "capped_cone", "quadric", "csg",      "blob"};
   ASSERT_EQ(std::size(names), kShapeKindCount);
   for (std::size_t i = 0; i < kShapeKindCount; ++i)
     EXPECT_EQ(kindName(PrimitiveKind(i)), names[i]);
@@ -90,7 +90,7 @@ TEST(ShapeKinds, NamesAndFlatnessFollowTheList) {
   EXPECT_TRUE(isFlat(kindOf<Disc>));
   EXPECT_FALSE(isFlat(kindOf<Sphere>) || isFlat(kindOf<Ellipsoid>) || isFlat(kindOf<Cone>) ||
                isFlat(kindOf<Torus>) || isFlat(kindOf<Box>) || isFlat(kindOf<CappedCone>) ||
-               isFlat(kindOf<Quadric>) || isFlat(kindOf<Csg>));
+               isFlat(kindOf<Quadric>) || isFlat(kindOf<Csg>) || isFlat(kindOf<Blob>));
 }
 
 // The dispatch reaches every kind: one primitive of each, each visited as its
@@ -108,6 +108,7 @@ TEST(ShapeKinds, TheDispatchReachesEveryKind) {
   scene.shapes<CappedCone>().push_back({});
   scene.shapes<Quadric>().push_back({});
   scene.shapes<Csg>().push_back({});
+  scene.shapes<Blob>().push_back({});
   ASSERT_EQ(scene.primitiveCount(), kShapeKindCount);
   std::set<std::string> visited;
   for (const PrimitiveRef& ref : scene.allPrimitives()) {

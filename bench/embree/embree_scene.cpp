@@ -121,6 +121,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const EmbreeOptions& options) {
   addUser(kindOf<Disc>, scene.shapes<Disc>().size());
   addUser(kindOf<CappedCone>, scene.shapes<CappedCone>().size());
   addUser(kindOf<Quadric>, scene.shapes<Quadric>().size());
+  addUser(kindOf<Blob>, scene.shapes<Blob>().size());
   check(device_, "building the geometry");
 
   const auto start = std::chrono::steady_clock::now();

@@ -246,6 +246,19 @@ private:
     out_ << "}\n";
   }
 
+  // POV-Ray's blob of sphere components, whose field is Prism's (blob.h);
+  // one with a frame carried by its matrix. `sturm` has POV-Ray solve the
+  // quartics with Sturm sequences, the more robust of its two solvers.
+  void one(const Blob& b) {
+    out_ << "blob { threshold " << num(b.threshold) << "\n";
+    for (const BlobComponent& c : componentsOf(b, scene_.arrays()))
+      out_ << "  sphere { " << vec(c.center) << ", " << num(c.radius) << ", strength "
+           << num(c.strength) << " }\n";
+    out_ << "  sturm ";
+    if (b.placed) out_ << matrix(b.frame.objectToWorld, b.frame.objectToWorldOffset) << " ";
+    out_ << material(b.material) << "\n}\n";
+  }
+
   // Triangles as POV-Ray meshes: one per run of triangles of one material
   // (a mesh has one material), which POV-Ray stores and bounds more cheaply
   // than as many separate objects.

@@ -13,6 +13,7 @@
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
 #include "core/scene/scene_builder.h"
+#include "core/shapes/blob.h"
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
@@ -86,6 +87,7 @@ const Mat3& placedMap(const Box& b) { return b.frame.objectToWorld; }
 const Mat3& placedMap(const Disc& d) { return d.frame.objectToWorld; }
 const Mat3& placedMap(const Torus& t) { return t.objectToWorld; }
 const Mat3& placedMap(const Quadric& q) { return q.frame.objectToWorld; }
+const Mat3& placedMap(const Blob& b) { return b.frame.objectToWorld; }
 
 class Parser : public ReaderBase {
 public:
@@ -97,7 +99,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 28> kKeywords;
+  static const std::array<Keyword, 29> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -149,6 +151,7 @@ private:
   void box(Command& c);
   void disc(Command& c);
   void quadric(Command& c);
+  void blob(Command& c);
   // The cone between two end circles under the current transform, for
   // `cone`, `capped_cone` and `cylinder`, or nothing after an error.
   std::optional<Cone> placedCone(Command& c, const Vec3& base, double baseRadius, const Vec3& apex,
@@ -162,6 +165,9 @@ private:
   // the checks they share: within the model range, and, when the map is
   // what `prism convert` writes back, not stretched too unevenly for that.
   template <class Shape> void addPlaced(Command& c, Shape shape, const char* name, bool mapWritten);
+  // The checks of addPlaced: false after reporting a problem.
+  template <class Shape>
+  bool placedFits(Command& c, const Shape& shape, const char* name, bool mapWritten);
   // Transforms, groups and other files.
   void push(Command& c);
   void pop(Command& c);
@@ -205,11 +211,12 @@ private:
   std::map<fs::path, std::uint32_t> fileIndices_;
   std::size_t parsedBytes_ = 0;
 
-  bool cameraBroken_ = false;  // an eye/lookat/up was rejected: skip the camera checks
-  std::vector<Vec3> vertices_; // scratch for polygon
+  bool cameraBroken_ = false;             // an eye/lookat/up was rejected: skip the camera checks
+  std::vector<Vec3> vertices_;            // scratch for polygon
+  std::vector<BlobComponent> components_; // scratch for blob
 };
 
-const std::array<Parser::Keyword, 28> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 29> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -230,6 +237,7 @@ const std::array<Parser::Keyword, 28> Parser::kKeywords = {{
     {"cylinder", &Parser::cylinder},
     {"capped_cone", &Parser::cone}, // a cone closed by discs at both ends
     {"quadric", &Parser::quadric},
+    {"blob", &Parser::blob},
     {"push", &Parser::push},
     {"pop", &Parser::pop},
     {"csg", &Parser::csg},
@@ -430,15 +438,21 @@ void Parser::sphere(Command& c) {
 }
 
 template <class Shape>
-void Parser::addPlaced(Command& c, Shape shape, const char* name, bool mapWritten) {
-  if (!withinModelRange(boundsOf(shape))) {
+bool Parser::placedFits(Command& c, const Shape& shape, const char* name, bool mapWritten) {
+  if (!withinModelRange(boundsOf(shape, ShapeArrays{}))) {
     error(c.keyword, outsideModelRangeMessage(name));
-    return;
+    return false;
   }
   if (mapWritten && !(stretchRatioBound(placedMap(shape)) <= kMaxStretchRatio)) {
     error(c.keyword, tooUnevenMessage(name));
-    return;
+    return false;
   }
+  return true;
+}
+
+template <class Shape>
+void Parser::addPlaced(Command& c, Shape shape, const char* name, bool mapWritten) {
+  if (!placedFits(c, shape, name, mapWritten)) return;
   shape.material = build_.currentMaterial();
   shape.origin = origin(c);
   build_.add(shape);
@@ -631,6 +645,59 @@ void Parser::torus(Command& c) {
   // core/io/shape_text/), which must stay well conditioned; a round one as
   // its centre, axis and radii.
   addPlaced(c, torus, "torus", !isRound(torus));
+}
+
+void Parser::blob(Command& c) {
+  Arg threshold;
+  if (!number(c, "THRESHOLD", threshold)) return;
+  if (c.valid && !(threshold.value > 0.0))
+    invalid(c, threshold.token,
+            "THRESHOLD must be positive, found " + quoted(threshold.token.text));
+  std::optional<std::uint64_t> count;
+  if (!integer(c, "N", 1, kMaxBlobComponents, count)) return;
+  if (!count) {
+    skipNumbers();
+    return;
+  }
+  // Read as they come, so a hostile N costs nothing until its numbers are
+  // there.
+  components_.clear();
+  static constexpr const char* kSlots[] = {"X", "Y", "Z", "R", "S"};
+  for (std::uint64_t i = 0; i < *count; ++i) {
+    Arg a[5];
+    for (int k = 0; k < 5; ++k) {
+      const std::string name = kSlots[k] + std::to_string(i + 1);
+      if (!number(c, name.c_str(), a[k])) return;
+    }
+    const std::string index = std::to_string(i + 1);
+    if (a[3].value <= 0.0)
+      invalid(c, a[3].token, "R" + index + " must be positive, found " + quoted(a[3].token.text));
+    if (a[4].value == 0.0)
+      invalid(c, a[4].token, "S" + index + " must not be zero, found " + quoted(a[4].token.text));
+    components_.push_back({vec(a), a[3].value, a[4].value});
+  }
+  if (!c.valid) return;
+  if (const std::optional<std::string> problem = blobProblem(components_, threshold.value)) {
+    error(c.keyword, "blob: " + *problem);
+    return;
+  }
+  PlacedBlob placed =
+      makeBlob(components_, threshold.value, transform_.linear(), transform_.point(Vec3(0.0)));
+  bool usable = allFinite(placed.blob.frame.worldToObject) &&
+                isFinite(placed.blob.frame.worldToObjectOffset) && !placed.blob.bounds.empty();
+  for (const BlobComponent& component : placed.components)
+    usable = usable && isFinite(component.center) && component.radius > 0.0 &&
+             std::isfinite(component.radius);
+  if (!usable) {
+    error(c.keyword, "blob: too large or too small after the current transform");
+    return;
+  }
+  // A blob under a stretching transform is written back through its frame's
+  // map (see core/io/shape_text/), which must stay well conditioned.
+  if (!placedFits(c, placed.blob, "blob", placed.blob.placed)) return;
+  placed.blob.material = build_.currentMaterial();
+  placed.blob.origin = origin(c);
+  build_.blob(placed);
 }
 
 void Parser::triangle(Command& c) {

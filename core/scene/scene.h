@@ -42,6 +42,7 @@ struct Scene {
   // are primitives, in shapes<Csg>().
   std::vector<CsgOperand> csgOperands;
   std::vector<Csg> csgNodes;
+  std::vector<BlobComponent> blobComponents; // of the blobs (Blob::firstComponent)
   std::vector<Group> groups{Group{}};
   std::vector<std::string> files; // files[0] is the main scene file
 
@@ -56,7 +57,8 @@ struct Scene {
   }
   // The arrays shapes index into, as the shape functions take them.
   ShapeArrays arrays() const {
-    return {polygonVertices, polygonEdgeIndices, meshVertices, meshNormals, csgOperands, csgNodes};
+    return {polygonVertices, polygonEdgeIndices, meshVertices,  meshNormals,
+            csgOperands,     csgNodes,           blobComponents};
   }
 
   // Calls f with the shape `ref` names, as its own type: the one place that

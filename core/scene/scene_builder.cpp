@@ -42,6 +42,16 @@ PrimitiveRef SceneBuilder::polygon(std::span<const Vec3> vertices, std::uint32_t
   return inGroup({kindOf<Polygon>, std::uint32_t(scene_.shapes<Polygon>().size() - 1)});
 }
 
+PrimitiveRef SceneBuilder::blob(const PlacedBlob& placed) {
+  Blob b = placed.blob;
+  b.firstComponent = std::uint32_t(scene_.blobComponents.size());
+  b.componentCount = std::uint32_t(placed.components.size());
+  scene_.blobComponents.insert(scene_.blobComponents.end(), placed.components.begin(),
+                               placed.components.end());
+  scene_.shapes<Blob>().push_back(b);
+  return inGroup({kindOf<Blob>, std::uint32_t(scene_.shapes<Blob>().size() - 1)});
+}
+
 PrimitiveRef SceneBuilder::triangle(const std::array<Vec3, 3>& vertices,
                                     const std::array<Vec3, 3>* normals, std::uint32_t material,
                                     Origin origin) {

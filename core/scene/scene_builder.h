@@ -86,6 +86,10 @@ public:
   // it has many vertices.
   PrimitiveRef polygon(std::span<const Vec3> vertices, std::uint32_t material, Origin origin);
 
+  // A blob made by makeBlob, with its material and origin already set: its
+  // components go to the scene's array.
+  PrimitiveRef blob(const PlacedBlob& placed);
+
   // A triangle with vertices of its own (and, when `normals` is given, unit
   // vertex normals of its own), in the order given: the caller has checked
   // them with triangleProblem.

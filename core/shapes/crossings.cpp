@@ -56,4 +56,12 @@ void appendCrossings(const CappedCone& c, const ShapeArrays&, const Ray& ray, In
     appendSpan(spans[i].t0, spans[i].part0, spans[i].t1, spans[i].part1, range, out);
 }
 
+void appendCrossings(const Blob& b, const ShapeArrays& arrays, const Ray& ray, Interval range,
+                     std::vector<Crossing>& out) {
+  visitBlobCrossings(b, componentsOf(b, arrays), ray, range, [&](double t, bool entering) {
+    out.push_back({t, entering, 0});
+    return true;
+  });
+}
+
 } // namespace prism

@@ -5,6 +5,7 @@
 // provides it and can then be an operand of CSG.
 #pragma once
 
+#include "core/shapes/blob.h"
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/ellipsoid.h"
@@ -44,6 +45,10 @@ void appendCrossings(const Torus& torus, const ShapeArrays&, const Ray& ray, Int
 void appendCrossings(const Box& b, const ShapeArrays&, const Ray& ray, Interval range,
                      std::vector<Crossing>& out);
 void appendCrossings(const CappedCone& c, const ShapeArrays&, const Ray& ray, Interval range,
+                     std::vector<Crossing>& out);
+// A tangent touch within round-off may show as an entering and a leaving
+// crossing at almost one t (blob.h).
+void appendCrossings(const Blob& b, const ShapeArrays& arrays, const Ray& ray, Interval range,
                      std::vector<Crossing>& out);
 
 } // namespace prism

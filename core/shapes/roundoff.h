@@ -7,6 +7,7 @@
 // times a small constant. Every |.| here is the largest absolute component.
 #pragma once
 
+#include "core/shapes/blob.h"
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
@@ -67,6 +68,8 @@ inline double roundoffScale(const CappedCone& c, const ShapeArrays&) { return c.
 // The clip box's largest coordinate as the size: the root is polished by a
 // Newton step at the hit point (see docs/rendering-model.md#quadrics).
 inline double roundoffScale(const Quadric& q, const ShapeArrays&) { return q.roundoff; }
+// The frame's; the surface record adds the field's round-off (blob.h).
+inline double roundoffScale(const Blob& b, const ShapeArrays&) { return b.roundoff; }
 
 // t = (planeOffset - normal.origin) / (normal.dir): the plane's own offset
 // from the world's origin is the only number besides the ray's.

@@ -28,6 +28,7 @@
 // pictures), a reader handler and a writer overload (see docs/architecture.md).
 #pragma once
 
+#include "core/shapes/blob.h"
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
@@ -102,7 +103,7 @@ template <ShapeKind... Kinds> struct ShapeList {
 };
 
 using ShapeKinds = ShapeList<Sphere, Ellipsoid, Polygon, Cone, Triangle, Torus, Box, Disc,
-                             CappedCone, Quadric, Csg>;
+                             CappedCone, Quadric, Csg, Blob>;
 inline constexpr std::size_t kShapeKindCount = ShapeKinds::size;
 
 namespace detail {

@@ -1,6 +1,7 @@
 #include "core/shapes/torus.h"
 
 #include "core/shapes/axis_frame.h"
+#include "core/shapes/refine_root.h"
 #include "core/shapes/roundoff.h"
 
 #include <algorithm>
@@ -46,11 +47,7 @@ FrameLine frameLine(const Torus& torus, const Ray& ray) {
 // times a positive factor (see below), so the two agree on every sign, but
 // evaluated from its coefficients the quartic loses its sign to cancellation
 // near the inner rim.
-struct Value {
-  double value;
-  double slope;
-};
-Value tubeFunction(const FrameLine& line, double s) {
+FunctionValue tubeFunction(const FrameLine& line, double s) {
   const Vec3 p = line.at + s * line.dir;
   const double rho = std::sqrt(p.x * p.x + p.y * p.y);
   const double radial = rho - line.major;
@@ -59,38 +56,6 @@ Value tubeFunction(const FrameLine& line, double s) {
   const double rhoSlope = rho > 0.0 ? (p.x * line.dir.x + p.y * line.dir.y) / rho : 0.0;
   return {(radial - line.minor) * (radial + line.minor) + p.z * p.z,
           2.0 * (radial * rhoSlope + p.z * line.dir.z)};
-}
-
-// The root of f (which returns a Value) in [a, b], where f is negative at a
-// exactly when `negativeAtA` and of the other sign at b: Newton steps while
-// they stay in the bracket and shrink fast, bisection otherwise (Numerical
-// Recipes' rtsafe), from `start` if it lies inside. Stops after a Newton
-// step shorter than `settled` (the step after it would be of the order of
-// its square), or at the precision of the numbers (|s| <= 2 in the rescaled
-// frame, so an absolute 2^-56 is a tenth of their round-off).
-template <class F>
-double refineRoot(F f, double a, double b, bool negativeAtA, double start, double settled) {
-  double x = start > a && start < b ? start : 0.5 * (a + b);
-  double step = b - a;
-  for (int i = 0; i < 200; ++i) {
-    const Value v = f(x);
-    if (v.value == 0.0) return x;
-    ((v.value < 0.0) == negativeAtA ? a : b) = x;
-    if (b - a <= 0x1p-56) break;
-    const double newton = v.slope != 0.0 ? v.value / v.slope : 0.0;
-    double next = x - newton;
-    if (v.slope != 0.0 && next > a && next < b && std::abs(newton) < 0.5 * std::abs(step)) {
-      if (std::abs(newton) <= settled) return next;
-      step = newton;
-    } else {
-      next = 0.5 * (a + b);
-      step = 0.5 * (b - a);
-      if (!(next > a && next < b)) break;
-    }
-    if (next == x) break;
-    x = next;
-  }
-  return x;
 }
 
 // The real roots in (lo, hi) of A s^2 + B s + C (A > 0), in increasing
@@ -164,8 +129,8 @@ void visitCrossings(const Torus& torus, const Ray& ray, Interval range, Visit&& 
   // + c1, one in each stretch between the roots of q''/2 = 6 s^2 + 3 c3 s +
   // c2 where q' changes sign.
   const auto slope = [&](double s) {
-    return Value{((4.0 * s + 3.0 * c3) * s + 2.0 * c2) * s + c1,
-                 (12.0 * s + 6.0 * c3) * s + 2.0 * c2};
+    return FunctionValue{((4.0 * s + 3.0 * c3) * s + 2.0 * c2) * s + c1,
+                         (12.0 * s + 6.0 * c3) * s + 2.0 * c2};
   };
   // Newton steps of 2^-40 leave errors of order 2^-80 (times the ratio of
   // the second derivative to the first): far below round-off. A critical

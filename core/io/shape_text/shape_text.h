@@ -50,5 +50,6 @@ void write(TextOut& text, const CappedCone& c, int depth);
 void write(TextOut& text, const Box& b, int depth);
 void write(TextOut& text, const Disc& d, int depth);
 void write(TextOut& text, const Quadric& q, int depth);
+void write(TextOut& text, const Blob& b, int depth);
 
 } // namespace prism::sc

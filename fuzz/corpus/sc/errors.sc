@@ -16,6 +16,10 @@ cone 0 0 0 -1 0 1 0 1
 torus 0 0 0 0 0 0 1 0.5
 torus 0 0 0 0 0 1 1 1
 torus 0 0 0 0 0 1 0 0.5
+blob 0 1  0 0 0 1 1
+blob 0.5 2  0 0 0 0 1  1 0 0 1 0
+blob 1 1  0 0 0 1 -2
+blob 0.5 3  0 0 0 1 1
 ptriangle 0 0 0 0 0 0 1 0 0 0 0 1 0 1 0 0 0 1
 triangle 0 0 0 1 1 1 2 2 2
 scale 0 1 1

@@ -1,5 +1,5 @@
 # push/pop with every transform; a non-uniform scale makes an ellipsoid and an
-# elliptic cone and a stretched torus, a negative one mirrors.
+# elliptic cone, a stretched torus and a stretched blob, a negative one mirrors.
 eye 3 4 9
 light 0 10 10 1 1 1
 push
@@ -10,6 +10,7 @@ push
   sphere 0 0 0 1
   cone 0 -1 0 1  0 1 0 0.2
   torus 0 1 0  1 1 0  0.8 0.2
+  blob 0.5 2  0 0 0 1 1  0.8 0 0 0.6 1.5
   push
     scale -1 1 1
     polygon 3  0 0 0  1 0 0  0 1 0

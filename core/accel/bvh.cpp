@@ -196,11 +196,6 @@ float roundUp(double x) {
   return f;
 }
 
-double halfArea(const Aabb& b) {
-  const Vec3 e = b.extent();
-  return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
 } // namespace
 
 struct Bvh::BuildContext {
@@ -270,8 +265,8 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
       double largest = -1.0;
       for (int i = 0; i < count; ++i) {
         const SahTree::Node& n = tree.nodes[kids[i]];
-        if (!n.leaf() && halfArea(n.box) > largest) {
-          largest = halfArea(n.box);
+        if (!n.leaf() && n.box.halfArea() > largest) {
+          largest = n.box.halfArea();
           open = i;
         }
       }

@@ -7,16 +7,11 @@ namespace prism {
 
 namespace {
 
-double halfArea(const Aabb& b) {
-  const Vec3 e = b.extent();
-  return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
 // The summed half-area of the boxes of n slices of equal height.
 double slicedArea(const Cone& cone, int n) {
   double area = 0.0;
   for (int i = 0; i < n; ++i)
-    area += halfArea(sliceBounds(cone, double(i) / n, double(i + 1) / n));
+    area += sliceBounds(cone, double(i) / n, double(i + 1) / n).halfArea();
   return area;
 }
 
@@ -27,7 +22,7 @@ int coneSliceCount(const Cone& cone) {
   // (and duplicate tests where a ray crosses two slices) for little.
   constexpr double kWorthwhile = 0.7;
   int n = 1;
-  double area = halfArea(cone.bounds);
+  double area = cone.bounds.halfArea();
   while (n < kMaxConeSlices) {
     const double finer = slicedArea(cone, 2 * n);
     if (!(finer <= kWorthwhile * area)) break;
@@ -47,7 +42,7 @@ std::vector<BoxedPrimitive> hierarchyBoxes(const Scene& scene, std::size_t extra
   std::vector<double> saved(cones.size(), 0.0);
   for (std::size_t i = 0; i < cones.size(); ++i) {
     slices[i] = coneSliceCount(cones[i]);
-    if (slices[i] > 1) saved[i] = halfArea(cones[i].bounds) - slicedArea(cones[i], slices[i]);
+    if (slices[i] > 1) saved[i] = cones[i].bounds.halfArea() - slicedArea(cones[i], slices[i]);
   }
   std::vector<std::size_t> byGain(cones.size());
   std::iota(byGain.begin(), byGain.end(), 0);

@@ -8,15 +8,6 @@ namespace prism {
 
 namespace {
 
-// Half the surface area: proportional to the chance that a random ray hits the
-// box, which is all the heuristic needs. Unbounded boxes cost "a lot", not NaN.
-double halfArea(const Aabb& b) {
-  if (b.empty()) return 0.0;
-  const Vec3 e = b.extent();
-  const double a = e.x * e.y + e.y * e.z + e.z * e.x;
-  return std::isnan(a) ? std::numeric_limits<double>::infinity() : a;
-}
-
 struct Task {
   std::uint32_t node, begin, end;
   int depth;
@@ -123,7 +114,7 @@ private:
   double bestSplit(const std::vector<std::uint32_t>& order, const Task& task, const Aabb& box,
                    const Aabb& centres, int& axis, int& splitBin) {
     double best = std::numeric_limits<double>::infinity();
-    const double parentArea = halfArea(box);
+    const double parentArea = box.halfArea();
     std::vector<double>& rightCost = costScratch_;
     rightCost.assign(std::size_t(bins_), 0.0);
     // All three axes are binned in one pass over the items (each item's box
@@ -155,7 +146,7 @@ private:
       for (int k = bins_ - 1; k > 0; --k) {
         right.extend(bins[std::size_t(k)].box);
         rightCount += bins[std::size_t(k)].count;
-        rightCost[std::size_t(k)] = halfArea(right) * double(rightCount);
+        rightCost[std::size_t(k)] = right.halfArea() * double(rightCount);
       }
       Aabb left;
       std::uint32_t leftCount = 0;
@@ -166,7 +157,8 @@ private:
         if (leftCount == 0 || leftCount == count) continue;
         const double cost =
             1.0 + options_.intersectCost *
-                      (halfArea(left) * double(leftCount) + rightCost[std::size_t(k)]) / parentArea;
+                      (left.halfArea() * double(leftCount) + rightCost[std::size_t(k)]) /
+                      parentArea;
         if (cost < best) {
           best = cost;
           axis = a;

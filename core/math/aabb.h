@@ -24,6 +24,16 @@ struct Aabb {
   Vec3 centroid() const { return 0.5 * (lo + hi); }
   Vec3 extent() const { return hi - lo; }
 
+  // Half the surface area: proportional to the chance that a random ray hits
+  // the box, which is what the hierarchies weigh boxes by. 0 for an empty
+  // box; an unbounded one costs "a lot", not NaN.
+  double halfArea() const {
+    if (empty()) return 0.0;
+    const Vec3 e = extent();
+    const double a = e.x * e.y + e.y * e.z + e.z * e.x;
+    return std::isnan(a) ? std::numeric_limits<double>::infinity() : a;
+  }
+
   // Grows the box by a tiny amount relative to its position, so flat boxes
   // (of axis-aligned polygons) have thickness and the slab test never
   // evaluates 0 * inf for a ray lying in a face plane: 2^-46, 64 ulps of its

@@ -270,8 +270,8 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
 }
 
 TEST_F(Cli, RendersEveryShippedScene) {
-  for (const char* name :
-       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc", "quadrics.sc", "csg.sc"}) {
+  for (const char* name : {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc", "torus.sc",
+                           "quadrics.sc", "csg.sc", "blobs.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
     const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");

@@ -99,7 +99,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 29> kKeywords;
+  static const std::array<Keyword, 31> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -140,6 +140,8 @@ private:
   void background(Command& c) { globalColor(c, scene_.background); }
   void ambient(Command& c) { globalColor(c, scene_.ambient); }
   void globalColor(Command& c, Color& target);
+  void fog(Command& c);
+  void absorption(Command& c);
   void light(Command& c);
   void surface(Command& c);
   // Shapes.
@@ -216,7 +218,7 @@ private:
   std::vector<BlobComponent> components_; // scratch for blob
 };
 
-const std::array<Parser::Keyword, 29> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 31> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -226,6 +228,8 @@ const std::array<Parser::Keyword, 29> Parser::kKeywords = {{
     {"ambient", &Parser::ambient},
     {"light", &Parser::light},
     {"surface", &Parser::surface},
+    {"absorption", &Parser::absorption},
+    {"fog", &Parser::fog},
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
     {"cone", &Parser::cone},
@@ -370,6 +374,15 @@ void Parser::globalColor(Command& c, Color& target) {
   if (c.valid) target = vec(a);
 }
 
+void Parser::fog(Command& c) {
+  once(c);
+  Arg a[4];
+  if (!numbers(c, {"R", "G", "B", "DENSITY"}, a)) return;
+  requireColor(c, a);
+  requireNonNegative(c, a[3], "DENSITY");
+  if (c.valid) scene_.fog = Fog{vec(a), a[3].value};
+}
+
 void Parser::light(Command& c) {
   Arg a[6];
   if (!numbers(c, {"X", "Y", "Z", "R", "G", "B"}, a)) return;
@@ -395,6 +408,17 @@ void Parser::surface(Command& c) {
   }
   if (!c.valid) return;
   build_.setMaterial(Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value});
+}
+
+// Amends the current surface: the primitives after it absorb inside.
+void Parser::absorption(Command& c) {
+  Arg a[3];
+  if (!numbers(c, {"R", "G", "B"}, a)) return;
+  requireColor(c, a);
+  if (!c.valid) return;
+  Material m = build_.currentMaterialValue();
+  m.absorption = vec(a);
+  build_.setMaterial(m);
 }
 
 // ---------------------------------------------------------------------------

@@ -25,7 +25,9 @@ using Mat4 = glm::dmat4;
 // overflowed is pegged at the largest double before it is multiplied by a
 // coefficient that may be zero. The film then stores the largest float (see
 // toRgb). For every finite radiance this changes nothing.
-inline Color saturated(const Color& c) { return glm::min(c, Color(std::numeric_limits<double>::max())); }
+inline Color saturated(const Color& c) {
+  return glm::min(c, Color(std::numeric_limits<double>::max()));
+}
 
 inline double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
 

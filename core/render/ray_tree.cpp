@@ -19,8 +19,7 @@ std::string fmt(const Vec3& v) {
 void printMedium(std::ostream& out, const std::string& pad, const RayTreeNode& node,
                  const Scene& scene) {
   switch (node.medium) {
-  case SegmentMedium::Unrecorded:
-    return;
+  case SegmentMedium::Unrecorded: return;
   case SegmentMedium::Clear:
     out << pad << "  through clear space (d = " << node.segmentLength << ")";
     break;

@@ -47,7 +47,7 @@ struct RayTreeNode {
   Color highlight{0.0};      // ksr sum specular
   Color reflected{0.0};      // ksr I_r
   Color transmitted{0.0};    // kst I_t
-  Color radiance{0.0}; // leaving the hit point (or the background)
+  Color radiance{0.0};       // leaving the hit point (or the background)
   // Through the medium back to the ray's origin (scenes with fog or
   // absorbing materials only).
   SegmentMedium medium = SegmentMedium::Unrecorded;

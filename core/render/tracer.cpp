@@ -85,11 +85,11 @@ private:
 } // namespace
 
 Color Tracer::alongSegment(const Color& far, double length, RayTreeNode* record) const {
-  const Color near = inside_ != nullptr ? throughAbsorber(far, length, inside_->absorption)
+  const Color near = inside_ != nullptr    ? throughAbsorber(far, length, inside_->absorption)
                      : scene_.fog.active() ? throughFog(far, length, scene_.fog)
                                            : far;
   if (record != nullptr) {
-    record->medium = inside_ != nullptr ? SegmentMedium::Absorber
+    record->medium = inside_ != nullptr    ? SegmentMedium::Absorber
                      : scene_.fog.active() ? SegmentMedium::Fog
                                            : SegmentMedium::Clear;
     record->segmentLength = length;

@@ -165,7 +165,9 @@ TEST(Blob, TwoComponentsOnALine) {
     const long double want = sampledHit(comps, T, q, 8, 4000);
     const bool got = hit(scene, q, t);
     ASSERT_EQ(got, want >= 0) << i;
-    if (got) EXPECT_NEAR(t, double(want), 1e-10) << i;
+    if (got) {
+      EXPECT_NEAR(t, double(want), 1e-10) << i;
+    }
   }
 }
 

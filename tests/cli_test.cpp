@@ -270,8 +270,9 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
 }
 
 TEST_F(Cli, RendersEveryShippedScene) {
-  for (const char* name : {"table.sc", "glass.sc", "chex.sc", "tree.sc", "tree-solid.sc",
-                           "solids.sc", "torus.sc", "quadrics.sc", "csg.sc", "blobs.sc"}) {
+  for (const char* name :
+       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "tree-solid.sc", "solids.sc", "torus.sc",
+        "quadrics.sc", "csg.sc", "blobs.sc", "fog.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
     const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");

@@ -148,26 +148,20 @@ void walkCrossings(const Csg& node, const ShapeArrays& arrays, const Ray& ray, W
   }
 }
 
-// A leaf's record and coordinates at a point of the crossing's `part`, when
-// known. Only a mesh needs the part (its triangle): every other kind finds its
+// A leaf's record (and coordinates, when asked) at `point`. Only a mesh needs
+// the crossing's part, its triangle, when known: every other kind finds its
 // face from the point.
 template <class K>
 SurfacePoint recordAt(const K& shape, const ShapeArrays& arrays, const Vec3& point,
-                      const std::uint32_t*) {
-  return surfaceAt(shape, arrays, point);
+                      const std::uint32_t*, SurfaceDetail detail) {
+  SurfacePoint r = surfaceAt(shape, arrays, point);
+  if (detail == SurfaceDetail::WithCoordinates) r.uv = uvAt(shape, arrays, point);
+  return r;
 }
 SurfacePoint recordAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point,
-                      const std::uint32_t* part) {
-  return part != nullptr ? surfaceAt(m, arrays, point, *part) : surfaceAt(m, arrays, point);
-}
-template <class K>
-Vec2 coordinatesAt(const K& shape, const ShapeArrays& arrays, const Vec3& point,
-                   const std::uint32_t*) {
-  return uvAt(shape, arrays, point);
-}
-Vec2 coordinatesAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point,
-                   const std::uint32_t* part) {
-  return part != nullptr ? uvAt(m, arrays, point, *part) : uvAt(m, arrays, point);
+                      const std::uint32_t* part, SurfaceDetail detail) {
+  return surfaceAt(m, arrays, point, part != nullptr ? *part : nearestTriangle(m, arrays, point),
+                   detail);
 }
 
 // The record of a leaf at `point` (on its face `part`, if known), turned
@@ -175,9 +169,8 @@ Vec2 coordinatesAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& po
 SurfacePoint leafSurface(const Leaf& leaf, const ShapeArrays& arrays, const Vec3& point,
                          SurfaceDetail detail, const std::uint32_t* part = nullptr) {
   SurfacePoint s = visitLeaf(leaf, [&](const auto& shape) {
-    SurfacePoint r = recordAt(shape, arrays, point, part);
+    SurfacePoint r = recordAt(shape, arrays, point, part, detail);
     r.material = shape.material;
-    if (detail == SurfaceDetail::WithCoordinates) r.uv = coordinatesAt(shape, arrays, point, part);
     return r;
   });
   if (leaf.flipped) {

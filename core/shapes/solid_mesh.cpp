@@ -34,24 +34,6 @@ Vec3 nearestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
-// The index in the mesh of the triangle nearest `point`.
-std::uint32_t nearestTriangle(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point) {
-  const std::span<const Triangle> tris = trianglesOf(m, arrays);
-  const Vec3* v = arrays.meshVertices.data();
-  std::uint32_t best = 0;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  for (std::uint32_t i = 0; i < tris.size(); ++i) {
-    const Triangle& t = tris[i];
-    const Vec3 d = point - nearestOnTriangle(point, v[t.vertex[0]], v[t.vertex[1]], v[t.vertex[2]]);
-    const double distance = glm::dot(d, d);
-    if (distance < bestDistance) {
-      bestDistance = distance;
-      best = i;
-    }
-  }
-  return best;
-}
-
 } // namespace
 
 void appendCrossings(const SolidMesh& m, const ShapeArrays& arrays, const Ray& ray, Interval range,
@@ -83,8 +65,10 @@ void appendCrossings(const SolidMesh& m, const ShapeArrays& arrays, const Ray& r
   const double near = 0x1p-36 * (m.roundoff + maxAbsComponent(ray.origin)) / glm::length(ray.dir);
   bool inside = false; // the line begins outside the bounded solid
   for (std::size_t i = 0; i < hits.size();) {
-    int net = 0;
-    std::size_t j = i;
+    // (From i + 1: a cluster holds at least its first hit, even where `near`
+    // is not a number.)
+    int net = hits[i].entering ? 1 : -1;
+    std::size_t j = i + 1;
     for (; j < hits.size() && hits[j].t - hits[i].t <= near; ++j)
       net += hits[j].entering ? 1 : -1;
     // A touch (as many in as out), or a repeat of the way the line already
@@ -102,27 +86,34 @@ void appendCrossings(const SolidMesh& m, const ShapeArrays& arrays, const Ray& r
 }
 
 SurfacePoint surfaceAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point,
-                       std::uint32_t part) {
-  SurfacePoint s = surfaceAt(trianglesOf(m, arrays)[part], arrays, point);
+                       std::uint32_t part, SurfaceDetail detail) {
+  const Triangle& t = trianglesOf(m, arrays)[part];
+  SurfacePoint s = surfaceAt(t, arrays, point);
   s.part = part;
+  if (detail == SurfaceDetail::WithCoordinates) s.uv = uvAt(t, arrays, point);
   return s;
 }
 
-Vec2 uvAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point, std::uint32_t part) {
-  return uvAt(trianglesOf(m, arrays)[part], arrays, point);
-}
-
-SurfacePoint surfaceAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point) {
-  return surfaceAt(m, arrays, point, nearestTriangle(m, arrays, point));
+std::uint32_t nearestTriangle(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point) {
+  const std::span<const Triangle> tris = trianglesOf(m, arrays);
+  const Vec3* v = arrays.meshVertices.data();
+  std::uint32_t best = 0;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (std::uint32_t i = 0; i < tris.size(); ++i) {
+    const Triangle& t = tris[i];
+    const Vec3 d = point - nearestOnTriangle(point, v[t.vertex[0]], v[t.vertex[1]], v[t.vertex[2]]);
+    const double distance = glm::dot(d, d);
+    if (distance < bestDistance) {
+      bestDistance = distance;
+      best = i;
+    }
+  }
+  return best;
 }
 
 Vec3 outwardNormal(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point) {
   return geometricNormal(trianglesOf(m, arrays)[nearestTriangle(m, arrays, point)],
                          arrays.meshVertices.data());
-}
-
-Vec2 uvAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point) {
-  return uvAt(m, arrays, point, nearestTriangle(m, arrays, point));
 }
 
 } // namespace prism

@@ -56,16 +56,15 @@ void appendCrossings(const SolidMesh& m, const ShapeArrays& arrays, const Ray& r
                      std::vector<Crossing>& out);
 
 // The record at a point of triangle `part` (a crossing's): its normal, or the
-// interpolated one of a smooth triangle; part and coordinates as a triangle's.
+// interpolated one of a smooth triangle; the part is the triangle's index,
+// and the coordinates (when asked for) a triangle's.
 SurfacePoint surfaceAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point,
-                       std::uint32_t part);
-Vec2 uvAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point, std::uint32_t part);
+                       std::uint32_t part, SurfaceDetail detail);
 
-// From a point alone: of the triangle nearest the point (every triangle is
-// measured; for callers without the ray, which are rare).
-SurfacePoint surfaceAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point);
+// From a point alone (for callers without the ray, which are rare): the
+// index of the triangle nearest it, every triangle measured, and its normal.
+std::uint32_t nearestTriangle(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point);
 Vec3 outwardNormal(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point);
-Vec2 uvAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point);
 
 inline Aabb boundsOf(const SolidMesh& m, const ShapeArrays&) { return m.bounds; }
 inline double roundoffScale(const SolidMesh& m, const ShapeArrays&) { return m.roundoff; }

@@ -9,7 +9,13 @@
 #    spheres for the pips, whose hollows show the subtracted spheres' surfaces
 #    inside out and in a colour of their own;
 #  * a nut: a hexagonal prism (three turned boxes intersected) minus a
-#    cylinder, casting a shadow with a hole in it.
+#    cylinder, casting a shadow with a hole in it;
+#  * a magnifying glass held over the back left of the page, its handle
+#    running out of the picture: a thin lens (the intersection of two
+#    spheres) in a brass torus ring, a brass ferrule (a capped cone and a
+#    small torus) and a wooden capped-cylinder handle; through it the
+#    squares look half as large again or more, and its own shadow falls in
+#    front of the patch it magnifies.
 #
 # Units: roughly centimetres. Page y = 0.
 
@@ -106,4 +112,31 @@ push
     end
     cylinder 0 -1 0  0 1 0  0.6
   end
+pop
+
+# ---------------------------------------------------------------- a magnifying glass
+# A lens 2.4 across: two spheres of radius 9 with centres 17.84 apart, 0.16
+# thick in the middle (focal length about 9), in a ring of major radius 1.26
+# that covers its sharp rim. Built with the lens axis along y and the handle
+# along +x, then raised, turned and tilted toward the camera. (A stronger
+# lens, or one tilted less, shows a single square at a slant; held higher or
+# farther back it shows the page's edge; lower or nearer the light, its
+# patch of page lies in its own shadow: glass blocks shadow rays.)
+push
+  translate -4.8 2.4 -0.6
+  rotate 1 0 0 40      # lens face toward the camera
+  rotate 0 1 0 172     # handle toward the left, a little back
+  rotate 0 0 1 12      # handle end raised
+  surface 1 1 1  0 0.08 0.92  200 1.5
+  csg intersection
+    sphere 0 -8.92 0  9
+    sphere 0  8.92 0  9
+  end
+  surface 0.85 0.62 0.3  0.35 0.6 0  90 1     # brass
+  torus 0 0 0  0 1 0  1.26 0.1
+  capped_cone 1.32 0 0 0.07  1.85 0 0 0.11
+  torus 1.85 0 0  1 0 0  0.11 0.035
+  surface 0.3 0.14 0.07  0.8 0.25 0  40 1     # wood, varnished
+  capped_cone 1.87 0 0 0.12  3.7 0 0 0.16
+  sphere 3.7 0 0 0.16
 pop

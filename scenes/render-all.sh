@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the four shipped scenes as docs/scenes.md shows them (512x512 unless the
+# Renders the four shipped scenes and tree-solid.sc as docs/scenes.md shows them (512x512 unless the
 # scene says otherwise, depth 5, threshold 0.1) into out/, writes 256-pixel PNG
 # thumbnails to docs/, and prints the statistics table as Markdown.
 # Usage: scenes/render-all.sh [path/to/prism]   (default: build/prism)
@@ -16,7 +16,7 @@ field() { # field NAME FILE: a top-level number or string from prism's stats JSO
 
 echo "| scene | machine | depth | threshold | CPU seconds | wall seconds | pixels | rays/pixel | supersampled |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for name in table glass chex tree; do
+for name in table glass chex tree tree-solid; do
   "$prism" render "$root/scenes/$name.sc" -o "$root/out/$name.tiff" --depth "$depth" \
     --thresh "$thresh" --stats-json "$root/out/$name.json" -q
   oiiotool "$root/out/$name.tiff" --resize 256x0 -o "$root/docs/$name.png"

@@ -5,7 +5,8 @@
 // every ray through it, and a sweep of oblique rays through a neck against
 // dense sampling in long double; negative components; tangent rays and rays
 // from inside; far away, tiny and huge; rotated and stretched against the
-// analytic ellipsoid; the crossings CSG uses; the .sc `blob` and its errors;
+// analytic ellipsoid; the crossings CSG uses; two components far apart as
+// two spheres of the closed form; the .sc `blob` and its errors;
 // the writers. The hierarchies against brute force: accel_test's
 // BlobsMatchBruteForce.
 #include "core/io/pov_writer.h"
@@ -164,7 +165,9 @@ TEST(Blob, TwoComponentsOnALine) {
     const long double want = sampledHit(comps, T, q, 8, 4000);
     const bool got = hit(scene, q, t);
     ASSERT_EQ(got, want >= 0) << i;
-    if (got) EXPECT_NEAR(t, double(want), 1e-10) << i;
+    if (got) {
+      EXPECT_NEAR(t, double(want), 1e-10) << i;
+    }
   }
 }
 
@@ -372,6 +375,84 @@ TEST(Blob, CrossingsOfTwoSeparateComponents) {
   ASSERT_TRUE(hit(scene, q, t, Interval{5.0, 100.0}));
   EXPECT_NEAR(t, 5 + R, 1e-12);
   EXPECT_FALSE(hit(scene, q, t, Interval{5.0 + R + 1e-6, 8.0 - R - 1e-6}));
+}
+
+// Two components whose balls of influence (radius r) are 4 apart, more than
+// 2 + 1: each one's field is zero everywhere the other's is not, so the blob
+// is exactly two spheres of radius r sqrt(1 - sqrt(T / s)), by hand with
+// T = 0.25: r = 2, s = 1 gives 2 sqrt(1 - 1/2) = sqrt(2); r = 1, s = 4 gives
+// sqrt(1 - 1/4) = sqrt(3) / 2. Hits, normals and crossings of rays at each
+// and through both, against the spheres' roots and (p - c) / R.
+TEST(Blob, FarApartComponentsAreTwoSpheres) {
+  const double T = 0.25;
+  const Vec3 ca(1, 2, -1), cb(1 + 2.4, 2, -1 + 3.2); // |cb - ca| = 4
+  const double ra = std::sqrt(2.0), rb = std::sqrt(3.0) / 2;
+  const Scene scene = blobScene({{ca, 2, 1}, {cb, 1, 4}}, T);
+  const Blob& b = theBlob(scene);
+  // The spheres' entry and exit along `q` by hand: |o - c + t d|^2 = R^2.
+  struct Chord {
+    double in, out;
+  };
+  auto chord = [](const Ray& q, const Vec3& c, double R) {
+    const Vec3 oc = q.origin - c;
+    const double m = glm::dot(oc, q.dir), disc = m * m - (glm::dot(oc, oc) - R * R);
+    EXPECT_GT(disc, 0.0);
+    return Chord{-m - std::sqrt(disc), -m + std::sqrt(disc)};
+  };
+  // The hit, its normal and both crossings of a ray that meets one sphere.
+  auto expectOneSphere = [&](const Ray& q, const Vec3& c, double R) {
+    const Chord want = chord(q, c, R);
+    double t = 0;
+    ASSERT_TRUE(hit(scene, q, t));
+    EXPECT_NEAR(t, want.in, 1e-12);
+    test::expectCloseTo(outwardNormal(b, scene.arrays(), q.at(t)), (q.at(want.in) - c) / R, 1e-12);
+    const std::vector<Crossing> cr = crossingsOf(scene, q);
+    ASSERT_EQ(cr.size(), 2u);
+    EXPECT_TRUE(cr[0].entering);
+    EXPECT_FALSE(cr[1].entering);
+    EXPECT_NEAR(cr[0].t, want.in, 1e-12);
+    EXPECT_NEAR(cr[1].t, want.out, 1e-12);
+    test::expectCloseTo(outwardNormal(b, scene.arrays(), q.at(cr[1].t)), (q.at(want.out) - c) / R,
+                        1e-12);
+  };
+  // Down onto each, through its centre and 0.6 of its radius off it, and
+  // from the side, slanted.
+  const Vec3 da = glm::normalize(Vec3(0.3, 0, 1)), db = glm::normalize(Vec3(-0.2, 0, 1));
+  for (const double off : {0.0, 0.6}) {
+    expectOneSphere(ray(ca + Vec3(off * ra, 5, 0), {0, -1, 0}), ca, ra);
+    expectOneSphere(ray(cb + Vec3(0, 5, off * rb), {0, -1, 0}), cb, rb);
+    expectOneSphere(Ray{ca - 5.0 * da + Vec3(0, off * ra, 0), da}, ca, ra);
+    expectOneSphere(Ray{cb - 5.0 * db + Vec3(0, off * rb, 0), db}, cb, rb);
+  }
+  // Straight down between them: no hit.
+  double t = 0;
+  EXPECT_FALSE(hit(scene, ray(0.5 * (ca + cb) + Vec3(0, 5, 0), {0, -1, 0}), t));
+  EXPECT_TRUE(crossingsOf(scene, ray(0.5 * (ca + cb) + Vec3(0, 5, 0), {0, -1, 0})).empty());
+  // Through both: along the line of the centres, and parallel to it 0.5
+  // away (perpendicular to cb - ca), from beyond a's side.
+  const Vec3 axis = (cb - ca) / 4.0;
+  for (const double off : {0.0, 0.5}) {
+    const Ray q{ca - 5.0 * axis + Vec3(0, off, 0), axis};
+    const Chord a = chord(q, ca, ra), bb = chord(q, cb, rb);
+    if (off == 0.0) { // the hand values: 5 -+ sqrt(2) and 9 -+ sqrt(3) / 2
+      EXPECT_NEAR(a.in, 5 - ra, 1e-14);
+      EXPECT_NEAR(bb.out, 9 + rb, 1e-14);
+    }
+    ASSERT_TRUE(hit(scene, q, t));
+    EXPECT_NEAR(t, a.in, 1e-12);
+    test::expectCloseTo(outwardNormal(b, scene.arrays(), q.at(t)), (q.at(a.in) - ca) / ra, 1e-12);
+    // The second sphere, from between them.
+    ASSERT_TRUE(hit(scene, q, t, Interval{0.5 * (a.out + bb.in), 100.0}));
+    EXPECT_NEAR(t, bb.in, 1e-12);
+    test::expectCloseTo(outwardNormal(b, scene.arrays(), q.at(t)), (q.at(bb.in) - cb) / rb, 1e-12);
+    const std::vector<Crossing> cr = crossingsOf(scene, q);
+    ASSERT_EQ(cr.size(), 4u) << off;
+    const double want[] = {a.in, a.out, bb.in, bb.out};
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(cr[i].t, want[i], 1e-12) << off << " " << i;
+      EXPECT_EQ(cr[i].entering, i % 2 == 0) << off << " " << i;
+    }
+  }
 }
 
 TEST(Blob, BoundsAndCoordinates) {

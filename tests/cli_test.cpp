@@ -288,7 +288,8 @@ TEST_F(Cli, PixelNamesTheCsgOperandHit) {
 
 TEST_F(Cli, RendersEveryShippedScene) {
   for (const char* name :
-       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "solids.sc", "quadrics.sc", "csg.sc"}) {
+       {"table.sc", "glass.sc", "chex.sc", "tree.sc", "tree-solid.sc", "solids.sc", "torus.sc",
+        "quadrics.sc", "csg.sc", "blobs.sc", "fog.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
     const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");
@@ -397,7 +398,8 @@ TEST_F(Cli, TreeGeneratorReproducesTheCommittedTree) {
   fs::create_directories(dir_ / "parts");
   const std::string command = std::string("'") + PRISM_TREE_GEN + "' '" + dir_.string() + "'";
   ASSERT_EQ(std::system(command.c_str()), 0);
-  for (const char* file : {"tree.sc", "forest.sc", "parts/tree_body.sc"}) {
+  for (const char* file : {"tree.sc", "forest.sc", "parts/tree_body.sc", "tree-solid.sc",
+                           "parts/tree_solid_body.sc"}) {
     SCOPED_TRACE(file);
     const std::string generated = slurp(dir_ / file);
     EXPECT_FALSE(generated.empty());

@@ -155,8 +155,8 @@ TEST(ConeSlices, BarsAmongBallsAreSliced) {
     const Vec3 c(20 * u(rng), 20 * u(rng), 20 * u(rng));
     const Vec3 d(u(rng), u(rng), u(rng));
     addCone(scene, makeCone(c - d, 0.045, c + d, 0.045));
-    SceneBuilder(scene).add(Sphere{c - d, 0.1});
-    SceneBuilder(scene).add(Sphere{c + d, 0.1});
+    SceneBuilder(scene).add(Sphere{c - d, 0.1, 0, {}});
+    SceneBuilder(scene).add(Sphere{c + d, 0.1, 0, {}});
   }
   const Bvh bvh(scene);
   EXPECT_GT(bvh.referenceCount(), scene.primitiveCount());

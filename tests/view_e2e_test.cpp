@@ -141,6 +141,44 @@ quit
   std::printf("%s", r.out.c_str() + report);
 }
 
+// The surfaces beyond spheres, polygons and cones (boxes, capped cylinders
+// and cones, discs, a torus, a quadric, a blob, CSG) in the previewer: after
+// a light is moved, Save writes what `prism render` writes of the scene with
+// the light there, so the window traces them with the same code.
+TEST(ViewE2E, TheNewSurfacesShowAndSaveWhatRenderWrites) {
+  ScratchDir dir;
+  const auto surfaces = [](const std::string& light1) {
+    return "eye 0 3 7\nlookat 0 0.6 0\nfov 45\nresolution 120 80\n"
+           "ambient 0.1 0.1 0.1\n"
+           "light " +
+           light1 +
+           "  40 38 34\n"
+           "surface 0.8 0.8 0.7  0.9 0 0  1 1\nbox -4 -0.2 -3  4 0 2\n"
+           "surface 0.9 0.3 0.2  0.7 0.3 0  40 1\ncylinder -2.2 0 0  -2.2 1 0  0.4\n"
+           "capped_cone -1.2 0 -1  0.4  -1.2 1.2 -1  0.1\n"
+           "disc 2.5 0.01 1  0 1 0  0.5\n"
+           "surface 0.3 0.5 0.9  0.6 0.4 0  60 1\ntorus 0 0.3 0.8  0 1 0  0.6 0.2\n"
+           "quadric 1 1 0 0 0 0 0 -1 0 0  -0.5 0 -0.5  0.5 1 0.5\n"
+           "surface 1 1 1  0 0.1 0.9  200 1.5\n"
+           "csg difference\n  sphere 1.6 0.6 0  0.6\n  box 1.6 0.6 -1  2.4 1.4 1\nend\n"
+           "surface 0.9 0.7 0.2  0.6 0.4 0  80 1\n"
+           "blob 0.5 2  -0.3 1.8 -1.5 0.6 1  0.3 1.8 -1.5 0.6 1\n";
+  };
+  writeFile(dir / "a.sc", surfaces("3 4 4"));
+  writeFile(dir / "b.sc", surfaces("-2 5 3")); // a.sc after the script's light edit
+  writeFile(dir / "s.txt", "wait pass1\nlight 1 -2 5 3\nwait done\nsave saved.tiff\nquit\n");
+  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  ASSERT_EQ(run(dir.path(), kPrism + " render b.sc -o ref.tiff -q").exitCode, 0);
+  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o before.tiff -q").exitCode, 0);
+  const auto saved = readPicture(dir / "saved.tiff");
+  const auto reference = readPicture(dir / "ref.tiff");
+  const auto before = readPicture(dir / "before.tiff");
+  ASSERT_TRUE(saved && reference && before);
+  EXPECT_TRUE(sameRgb(*saved, *reference)) << "Save differs from prism render";
+  EXPECT_FALSE(sameRgb(*reference, *before)) << "moving the light changed nothing";
+}
+
 // The script's `no-aa on` switches antialiasing off as `prism render --no-aa`
 // does: Save writes its picture, which is not the antialiased one.
 TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {

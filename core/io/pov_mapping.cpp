@@ -25,6 +25,11 @@ PovMaterial povMaterialOf(const Material& m) {
   if (m.ksr > 0.0) p.roughness = m.e > 0.0 ? std::min(1.0 / m.e, 1e300) : 1e300;
   p.reflection = m.ksr;
   p.ior = m.ir;
+  const double strongest = std::max({m.absorption.r, m.absorption.g, m.absorption.b});
+  if (strongest > 0.0) {
+    p.fadeDistance = 1.0 / strongest;
+    p.fadeColor = Color(1.0) - m.absorption / strongest;
+  }
   return p;
 }
 

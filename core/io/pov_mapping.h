@@ -18,6 +18,12 @@ struct PovMaterial {
   double roughness = 0.0;  // finish roughness: 1 / exponent (0 when specular is 0)
   double reflection = 0.0; // finish reflection { r }: the mirror ray's weight
   double ior = 1.0;        // interior ior, written only when transmit > 0
+  // Absorption as POV-Ray's exponential fade (fade_power 1001), which
+  // multiplies a refracted ray by exp(-(1 - fade_color) d / fade_distance)
+  // per channel: fade_distance 1 / max sigma and fade_color 1 - sigma /
+  // max sigma give exp(-sigma d) exactly. fadeDistance 0: no fade.
+  double fadeDistance = 0.0;
+  Color fadeColor{1.0};
   // False when POV-Ray cannot show this material as Prism does: a
   // transmitting material (kst >= 1) that also reflects diffusely.
   bool exact = true;

@@ -64,6 +64,11 @@ public:
             "ambient_light rgb "
          << vec(scene_.ambient) << " }\n";
     out_ << "background { rgb " << vec(scene_.background) << " }\n";
+    // POV-Ray's constant fog is exp(-d / distance) L + (1 - exp(-d / distance)) C, a
+    // ray that meets nothing taking the fog's colour: Prism's fog exactly.
+    if (scene_.fog.active())
+      out_ << "fog { fog_type 1 distance " << num(1.0 / scene_.fog.density) << " color rgb "
+           << vec(scene_.fog.color) << " }\n";
   }
 
   // The vectors of Prism's camera (core/scene/camera.cpp) written out, with
@@ -108,7 +113,13 @@ public:
            << " specular " << num(m.specular);
       if (m.specular > 0.0) out_ << " roughness " << num(m.roughness);
       out_ << " reflection { " << num(m.reflection) << " } }\n  }\n";
-      if (m.transmit > 0.0) out_ << "  interior { ior " << num(m.ior) << " }\n";
+      if (m.transmit > 0.0) {
+        out_ << "  interior { ior " << num(m.ior);
+        if (m.fadeDistance > 0.0)
+          out_ << " fade_distance " << num(m.fadeDistance) << " fade_power 1001 fade_color rgb "
+               << vec(m.fadeColor);
+        out_ << " }\n";
+      }
       out_ << "}\n";
     }
   }

@@ -101,7 +101,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 30> kKeywords;
+  static const std::array<Keyword, 32> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -160,6 +160,8 @@ private:
   void background(Command& c) { globalColor(c, scene_.background); }
   void ambient(Command& c) { globalColor(c, scene_.ambient); }
   void globalColor(Command& c, Color& target);
+  void fog(Command& c);
+  void absorption(Command& c);
   void light(Command& c);
   void surface(Command& c);
   // Shapes.
@@ -243,7 +245,7 @@ private:
   std::optional<OpenMesh> mesh_;          // the open mesh block, if any
 };
 
-const std::array<Parser::Keyword, 30> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 32> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -253,6 +255,8 @@ const std::array<Parser::Keyword, 30> Parser::kKeywords = {{
     {"ambient", &Parser::ambient},
     {"light", &Parser::light},
     {"surface", &Parser::surface},
+    {"absorption", &Parser::absorption},
+    {"fog", &Parser::fog},
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
     {"cone", &Parser::cone},
@@ -402,6 +406,15 @@ void Parser::globalColor(Command& c, Color& target) {
   if (c.valid) target = vec(a);
 }
 
+void Parser::fog(Command& c) {
+  once(c);
+  Arg a[4];
+  if (!numbers(c, {"R", "G", "B", "DENSITY"}, a)) return;
+  requireColor(c, a);
+  requireNonNegative(c, a[3], "DENSITY");
+  if (c.valid) scene_.fog = Fog{vec(a), a[3].value};
+}
+
 void Parser::light(Command& c) {
   Arg a[6];
   if (!numbers(c, {"X", "Y", "Z", "R", "G", "B"}, a)) return;
@@ -427,6 +440,17 @@ void Parser::surface(Command& c) {
   }
   if (!c.valid) return;
   build_.setMaterial(Material{vec(a), a[3].value, a[4].value, a[5].value, a[6].value, a[7].value});
+}
+
+// Amends the current surface: the primitives after it absorb inside.
+void Parser::absorption(Command& c) {
+  Arg a[3];
+  if (!numbers(c, {"R", "G", "B"}, a)) return;
+  requireColor(c, a);
+  if (!c.valid) return;
+  Material m = build_.currentMaterialValue();
+  m.absorption = vec(a);
+  build_.setMaterial(m);
 }
 
 // ---------------------------------------------------------------------------

@@ -33,6 +33,8 @@ public:
     out_ << "fov " << num(c.fov) << "\n";
     out_ << "background " << vec(scene_.background) << "\n";
     out_ << "ambient " << vec(scene_.ambient) << "\n";
+    if (scene_.fog.active())
+      out_ << "fog " << vec(scene_.fog.color) << "  " << num(scene_.fog.density) << "\n";
     for (const Light& l : scene_.lights) {
       out_ << "light " << vec(l.position) << " " << vec(l.intensity) << "\n";
     }
@@ -78,6 +80,7 @@ private:
     if (m == current_) return;
     line(depth) << "surface " << vec(m.color) << "  " << num(m.kdr) << " " << num(m.ksr) << " "
                 << num(m.kst) << "  " << num(m.e) << " " << num(m.ir) << "\n";
+    if (m.absorbs()) line(depth) << "absorption " << vec(m.absorption) << "\n";
     current_ = m;
   }
 

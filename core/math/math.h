@@ -7,14 +7,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace prism {
 
 using Vec2 = glm::dvec2; // surface coordinates (u, v)
 using Vec3 = glm::dvec3;
 using Color = glm::dvec3; // linear RGB radiance; never clamped before exposure
+
 using Mat3 = glm::dmat3;
 using Mat4 = glm::dmat4;
+
+// Radiance is never limited, but a double can overflow: a light of intensity
+// 1e308 at distance 0.1, or a chain of mirrors with ksr > 1. Infinity is fine
+// in a sum of non-negative terms; only infinity times zero (a material with
+// kdr = 0 under that light) would make a NaN. So every value that may have
+// overflowed is pegged at the largest double before it is multiplied by a
+// coefficient that may be zero. The film then stores the largest float (see
+// toRgb). For every finite radiance this changes nothing.
+inline Color saturated(const Color& c) {
+  return glm::min(c, Color(std::numeric_limits<double>::max()));
+}
 
 inline double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
 

@@ -52,6 +52,9 @@ std::vector<double> radianceBounds(const Scene& scene, int maxDepth) {
       const Color deeper = k < maxDepth && carried > 0.0 ? carried * next : Color(0.0);
       bound = glm::max(bound, local + deeper);
     }
+    // Fog mixes what a ray brings back with its colour (weights summing to
+    // 1), absorption only takes away: the fog colour bounds it too.
+    if (scene.fog.active()) bound = glm::max(bound, scene.fog.color);
     next = bound;
     // Slightly raised, so that the tracer's rounded comparison can never
     // skip a ray the exact bound would keep.

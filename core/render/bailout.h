@@ -32,8 +32,9 @@ std::vector<double> lightClearances(const Scene& scene);
 // beyond[k] for k = 1..maxDepth (index 0 unused): with S = sum_j E_j / d_j^2
 // over the lights' clearances d_j, a local term is at most
 // C kdr (A + S) + ksr S, and
-//   beyond[D] = max(B, max over materials of local)
-//   beyond[k] = max(B, max over materials of local + (ksr + kst) beyond[k+1])
+//   beyond[D] = max(B, F, max over materials of local)
+//   beyond[k] = max(B, F, max over materials of local + (ksr + kst) beyond[k+1])
+// (F the fog's colour, when the scene has fog)
 // taken per channel, then the largest channel. Infinite when a light touches
 // a box: nothing is then ever skipped.
 std::vector<double> radianceBounds(const Scene& scene, int maxDepth);

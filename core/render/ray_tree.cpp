@@ -34,12 +34,34 @@ std::string operandOf(const RayTreeNode& node, const Scene& scene) {
       leaf->shape);
 }
 
+// The line saying what the segment's fog or absorbing solid did.
+void printMedium(std::ostream& out, const std::string& pad, const RayTreeNode& node,
+                 const Scene& scene) {
+  switch (node.medium) {
+  case SegmentMedium::Unrecorded: return;
+  case SegmentMedium::Clear:
+    out << pad << "  through clear space (d = " << node.segmentLength << ")";
+    break;
+  case SegmentMedium::Fog:
+    out << pad << "  through fog: d = " << node.segmentLength
+        << ", exp(-density d) = " << node.transmittance.r << ", fog colour "
+        << fmt(scene.fog.color);
+    break;
+  case SegmentMedium::Absorber:
+    out << pad << "  inside a solid: d = " << node.segmentLength
+        << ", exp(-absorption d) = " << fmt(node.transmittance);
+    break;
+  }
+  out << ": at the origin " << fmt(node.atOrigin) << "\n";
+}
+
 void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, int indent) {
   const std::string pad(std::size_t(indent) * 2, ' ');
   out << pad << rayKindName(node.kind) << " ray, depth " << node.depth << ": origin "
       << fmt(node.ray.origin) << " dir " << fmt(node.ray.dir) << "\n";
   if (!node.hit) {
     out << pad << "  misses everything: background " << fmt(node.radiance) << "\n";
+    printMedium(out, pad, node, scene);
     return;
   }
   out << pad << "  hits " << scene.describe(node.where.primitive) << operandOf(node, scene)
@@ -74,6 +96,7 @@ void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, i
       << (node.totalInternalReflection ? "  (total internal reflection: no transmitted ray)" : "")
       << "\n";
   out << pad << "  radiance                = " << fmt(node.radiance) << "\n";
+  printMedium(out, pad, node, scene);
   for (const RayTreeNode& child : node.children)
     printNode(out, child, scene, indent + 1);
 }

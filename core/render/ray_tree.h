@@ -22,6 +22,10 @@ struct LightTerm {
   Color specular{0.0};   // I_i max(N.H,0)^e / r^2 (before ksr)
 };
 
+// What the ray's segment crossed (media.h): nothing is recorded for a scene
+// without fog or absorbing materials (Unrecorded).
+enum class SegmentMedium : std::uint8_t { Unrecorded, Clear, Fog, Absorber };
+
 struct RayTreeNode {
   RayKind kind = RayKind::Eye;
   int depth = 1;
@@ -43,7 +47,13 @@ struct RayTreeNode {
   Color highlight{0.0};      // ksr sum specular
   Color reflected{0.0};      // ksr I_r
   Color transmitted{0.0};    // kst I_t
-  Color radiance{0.0};
+  Color radiance{0.0};       // leaving the hit point (or the background)
+  // Through the medium back to the ray's origin (scenes with fog or
+  // absorbing materials only).
+  SegmentMedium medium = SegmentMedium::Unrecorded;
+  double segmentLength = 0.0; // infinite for a miss
+  Color transmittance{1.0};   // exp(-coefficient d) per channel
+  Color atOrigin{0.0};
   std::vector<RayTreeNode> children;
 };
 

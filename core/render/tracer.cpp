@@ -1,5 +1,7 @@
 #include "core/render/tracer.h"
 
+#include "core/render/media.h"
+
 #include <limits>
 #include <stdexcept>
 
@@ -45,15 +47,6 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
   return true;
 }
 
-// Radiance is never limited, but a double can overflow: a light of intensity
-// 1e308 at distance 0.1, or a chain of mirrors with ksr > 1. Infinity is fine
-// in a sum of non-negative terms; only infinity times zero (a material with
-// kdr = 0 under that light) would make a NaN. So every value that may have
-// overflowed is pegged at the largest double before it is multiplied by a
-// coefficient that may be zero. The film then stores the largest float (see
-// toRgb). For every finite radiance this changes nothing.
-Color saturated(const Color& c) { return glm::min(c, Color(std::numeric_limits<double>::max())); }
-
 // A new ray's node in the ray tree, when one is recorded.
 RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
   if (record == nullptr) return nullptr;
@@ -67,6 +60,46 @@ RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
 Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCache cache)
     : scene_(scene), accel_(accel), maxDepth_(maxDepth) {
   if (cache == BlockerCache::On) lastBlocker_.resize(std::size_t(maxDepth) * scene.lights.size());
+  media_ = scene.fog.active() || std::any_of(scene.materials.begin(), scene.materials.end(),
+                                             [](const Material& m) { return m.absorbs(); });
+}
+
+// Eye rays start in the air. A mirror ray travels where the ray it mirrors
+// did; a refracted ray entering a solid (N.D <= 0) travels inside it, one
+// leaving it in the air: the same rule as refraction's index ratio (air
+// outside every solid, no solid inside another).
+namespace {
+class InsideScope {
+public:
+  InsideScope(const Material*& inside, const Material* now) : inside_(inside), saved_(inside) {
+    inside = now;
+  }
+  ~InsideScope() { inside_ = saved_; }
+  InsideScope(const InsideScope&) = delete;
+  InsideScope& operator=(const InsideScope&) = delete;
+
+private:
+  const Material*& inside_;
+  const Material* saved_;
+};
+} // namespace
+
+Color Tracer::alongSegment(const Color& far, double length, RayTreeNode* record) const {
+  const Color near = inside_ != nullptr    ? throughAbsorber(far, length, inside_->absorption)
+                     : scene_.fog.active() ? throughFog(far, length, scene_.fog)
+                                           : far;
+  if (record != nullptr) {
+    record->medium = inside_ != nullptr    ? SegmentMedium::Absorber
+                     : scene_.fog.active() ? SegmentMedium::Fog
+                                           : SegmentMedium::Clear;
+    record->segmentLength = length;
+    const Color coefficient = inside_ != nullptr ? inside_->absorption : Color(scene_.fog.density);
+    record->transmittance = {transmittance(coefficient.r, length),
+                             transmittance(coefficient.g, length),
+                             transmittance(coefficient.b, length)};
+    record->atOrigin = near;
+  }
+  return near;
 }
 
 Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* record,
@@ -78,8 +111,11 @@ Color Tracer::trace(const Ray& ray, int depth, RayCounts& counts, RayTreeNode* r
   Hit hit;
   if (!accel_.closestHit(ray, Interval{}, skip, hit)) {
     if (record != nullptr) record->radiance = scene_.background;
+    if (media_)
+      return alongSegment(scene_.background, std::numeric_limits<double>::infinity(), record);
     return scene_.background;
   }
+  if (media_) return alongSegment(shade(ray, hit, depth, counts, record), hit.t, record);
   return shade(ray, hit, depth, counts, record);
 }
 
@@ -91,6 +127,12 @@ void Tracer::traceBundle(std::span<const Ray> rays, std::span<Color> out, RayCou
   for (std::size_t i = 0; i < rays.size(); ++i)
     out[i] =
         (found >> i & 1u) != 0 ? shade(rays[i], hits[i], 1, counts, nullptr) : scene_.background;
+  if (!media_) return;
+  // Eye rays start in the air (inside_ is null between rays).
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    out[i] = alongSegment(
+        out[i], (found >> i & 1u) != 0 ? hits[i].t : std::numeric_limits<double>::infinity(),
+        nullptr);
 }
 
 void Tracer::setBailout(const BailoutBound& bound) {
@@ -275,6 +317,7 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
     return Color(0.0);
   }
   const Ray t{at.frame.below, dir};
+  const InsideScope scope(inside_, at.leaving ? nullptr : &m);
   // After the test for total internal reflection, which is counted as usual.
   if (bailout_ != nullptr)
     return m.kst * traceOrSkip(t, RayKind::Transmitted, m, depth, counts, record, at.skip);

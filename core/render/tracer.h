@@ -83,6 +83,10 @@ private:
   // allowance, else traced with that share (see tracer.cpp).
   Color traceOrSkip(const Ray& ray, RayKind kind, const Material& m, int depth, RayCounts& counts,
                     RayTreeNode* record, const PrimitiveRef* skip);
+  // The radiance `far` arriving at the origin of a segment of `length`
+  // (infinite: a miss) through the fog or the solid the ray is in, with the
+  // ray tree's record of it.
+  Color alongSegment(const Color& far, double length, RayTreeNode* record) const;
   // Whether anything but `skip` lies on `ray` before `length` (the light).
   bool blocked(const Ray& ray, double length, const PrimitiveRef* skip, std::size_t light,
                int depth);
@@ -98,6 +102,12 @@ private:
   // skipped descendants may sum to, divided by the product of the
   // coefficients on its path. Set for each new ray and restored after it.
   double allowance_ = 0.0;
+  // The scene has fog or an absorbing material: only then is a segment's
+  // medium looked at (media.h).
+  bool media_ = false;
+  // The solid the current ray travels inside (its material absorbs), or null
+  // for the air between solids. Set for each new ray and restored after it.
+  const Material* inside_ = nullptr;
 };
 
 } // namespace prism

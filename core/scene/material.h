@@ -13,6 +13,12 @@ struct Material {
   double kst = 0.0; // specular transmission (refracted ray)
   double e = 1.0;   // specular (Phong half-vector) exponent
   double ir = 1.0;  // index of refraction of the solid, air outside
+  // Beer-Lambert absorption inside the solid, per unit of world length and
+  // per channel (`absorption`): radiance crossing a length d of it is
+  // multiplied by exp(-absorption d). Zero (the default) is clear.
+  Color absorption{0.0};
+
+  bool absorbs() const { return absorption.r > 0.0 || absorption.g > 0.0 || absorption.b > 0.0; }
 
   bool operator==(const Material&) const = default;
 };

@@ -18,7 +18,8 @@ std::uint32_t MaterialTable::intern(const Material& m) {
 }
 
 MaterialTable::Key MaterialTable::keyOf(const Material& m) {
-  return {m.color.r, m.color.g, m.color.b, m.kdr, m.ksr, m.kst, m.e, m.ir};
+  return {m.color.r, m.color.g, m.color.b,      m.kdr,          m.ksr,         m.kst,
+          m.e,       m.ir,      m.absorption.r, m.absorption.g, m.absorption.b};
 }
 
 std::size_t MaterialTable::KeyHash::operator()(const Key& key) const {

@@ -16,6 +16,16 @@ struct Light {
   Color intensity{1.0};
 };
 
+// Homogeneous fog filling the space outside every solid (`fog`): radiance L
+// arriving along a segment of length d in it becomes
+// exp(-density d) L + (1 - exp(-density d)) color. Density 0: no fog.
+struct Fog {
+  Color color{0.0};
+  double density = 0.0; // per unit of world length
+
+  bool active() const { return density > 0.0; }
+};
+
 // One push/pop group: the modeller's hint for the bounding-volume hierarchy.
 // Scene::groups[0] is the top level of the main file.
 struct Group {
@@ -30,6 +40,7 @@ struct Scene {
   int height = 512;
   Color background{0.0};
   Color ambient{0.0};
+  Fog fog;
 
   std::vector<Light> lights; // light i of the user interface is lights[i - 1]
   std::vector<Material> materials;

@@ -41,6 +41,7 @@ public:
     current_ = m;
     currentIndex_.reset();
   }
+  const Material& currentMaterialValue() const { return current_; }
   std::uint32_t currentMaterial() {
     if (!currentIndex_) currentIndex_ = materials_.intern(current_);
     return *currentIndex_;

@@ -90,7 +90,7 @@ bool intersect(const Quadric& q, const Ray& ray, Interval range, double& t) {
                    dir.y * (k[1] * dir.y + k[4] * dir.z) + k[2] * dir.z * dir.z;
   const double b = glm::dot(quadricGradient(q, p), dir);
   const double c = quadricValue(q, p);
-  double roots[2];
+  double roots[2] = {0.0, 0.0}; // initialised only to quiet a false -Wmaybe-uninitialized
   int count = 0;
   if (a == 0.0) {
     // Along a paraboloid's axis or a cylinder's lines: linear (or, with b

@@ -179,6 +179,25 @@ TEST(ViewE2E, TheNewSurfacesShowAndSaveWhatRenderWrites) {
   EXPECT_FALSE(sameRgb(*reference, *before)) << "moving the light changed nothing";
 }
 
+// The script's `fog` fogs the window's scene as a `fog` line fogs the file:
+// Save writes what `prism render` writes of the scene with that line.
+TEST(ViewE2E, FogFromAScriptSavesWhatRenderOfTheFoggedFileWrites) {
+  ScratchDir dir;
+  writeFile(dir / "a.sc", scene("3 4 4"));
+  writeFile(dir / "b.sc", scene("3 4 4") + "fog 0.6 0.65 0.7  0.12\n");
+  writeFile(dir / "s.txt", "wait pass1\nfog 0.6 0.65 0.7 0.12\nwait done\nsave saved.tiff\nquit\n");
+  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  ASSERT_EQ(run(dir.path(), kPrism + " render b.sc -o fogged.tiff -q").exitCode, 0);
+  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o clear.tiff -q").exitCode, 0);
+  const auto saved = readPicture(dir / "saved.tiff");
+  const auto fogged = readPicture(dir / "fogged.tiff");
+  const auto clear = readPicture(dir / "clear.tiff");
+  ASSERT_TRUE(saved && fogged && clear);
+  EXPECT_TRUE(sameRgb(*saved, *fogged)) << "Save differs from prism render of the fogged file";
+  EXPECT_FALSE(sameRgb(*fogged, *clear)) << "the fog changed nothing";
+}
+
 // The script's `no-aa on` switches antialiasing off as `prism render --no-aa`
 // does: Save writes its picture, which is not the antialiased one.
 TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {

@@ -1,8 +1,10 @@
 #include "core/render/tracer.h"
 
 #include "core/render/media.h"
+#include "core/scene/material_blend.h"
 
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace prism {
@@ -200,7 +202,13 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   const SurfacePoint surface =
       scene_.surfaceAt(hit.primitive, ray, hit.t,
                        record != nullptr ? SurfaceDetail::WithCoordinates : SurfaceDetail::Shading);
-  const Material& m = scene_.materialAt(surface);
+  // A textured material is blended at the point (a copy); every other one is
+  // used in place, at the cost of one well-predicted test.
+  const Material& stored = scene_.materialAt(surface);
+  std::optional<Material> blended;
+  if (stored.texture.active()) [[unlikely]]
+    blended.emplace(textureAt(stored, point, record != nullptr ? &record->texture : nullptr));
+  const Material& m = blended ? *blended : stored;
   // Leaving iff N.D > 0; shade with the normal facing the ray.
   // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(surface.outward, ray.dir) > 0.0;
@@ -236,6 +244,8 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
     record->uv = surface.uv;
     record->part = surface.part;
     record->material = m;
+    record->textureKind = stored.texture.kind;
+    record->textureScale = stored.texture.scale;
     record->leaving = leaving;
     record->ambientDiffuse = direct.ambientDiffuse;
     record->highlight = direct.highlight;

@@ -121,12 +121,10 @@ TEST(Texture, PatternsAtHandPickedPoints) {
   EXPECT_EQ(at(TextureKind::Gradient, 1.75, 0, 0), 0.75);
   EXPECT_EQ(at(TextureKind::Gradient, -0.25, 0, 0), 0.75);
   EXPECT_EQ(at(TextureKind::Gradient, 3.0, 0, 0), 0.0);
-  // Marble and wood on the lattice, where the turbulence is 0:
-  // 0.5 - 0.5 cos(2 pi x) is 0 at integer x, 1 at half-integer x on a
-  // lattice point of the other two... x itself must be an integer for the
-  // turbulence to vanish, so marble is 0 there; wood is the fractional part
-  // of the radius, 0 at (3, 4) (radius 5) and at the axis.
-  EXPECT_NEAR(at(TextureKind::Marble, 3, -2, 7), 0.0, 1e-15);
+  // Marble and wood on the lattice, where the turbulence is 0: marble is
+  // (1 - |sin(pi x)|)^3, 1 (a vein) at integer x; wood is the fractional
+  // part of the radius, 0 at (3, 4) (radius 5) and on the axis.
+  EXPECT_NEAR(at(TextureKind::Marble, 3, -2, 7), 1.0, 1e-15);
   EXPECT_EQ(at(TextureKind::Wood, 3, 4, -6), 0.0);
   EXPECT_EQ(at(TextureKind::Wood, 0, 0, 11), 0.0);
 }

@@ -136,7 +136,7 @@ public:
   }
 
   // A textured material as POV-Ray's pattern over the two ends' textures
-  // (docs/vs-povray.md#textures): checker is the same pattern, stripes and
+  // (docs/vs-povray.md, What differs): checker is the same pattern, stripes and
   // gradient are POV-Ray's gradient x with a texture_map, noise, marble and
   // wood are POV-Ray's bozo, marble and wood, which are alike, not equal.
   void patterned(const Material& material) {

@@ -8,7 +8,7 @@ namespace prism {
 
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
+constexpr double kPi = 3.14159265358979323846;
 
 // floor(x) mod 2, as 0 or 1, without converting to an integer type (a
 // coordinate divided by a small scale may be beyond any integer's range;
@@ -33,8 +33,11 @@ double patternValue(TextureKind kind, const Vec3& p) {
   case TextureKind::Stripes: return parity(p.x);
   case TextureKind::Gradient: return unitClamp(fraction(p.x));
   case TextureKind::Noise: return unitClamp(0.5 + 0.5 * fractalNoise(p));
-  case TextureKind::Marble:
-    return unitClamp(0.5 - 0.5 * std::cos(kTwoPi * (p.x + kMarbleSwirl * turbulence(p))));
+  case TextureKind::Marble: {
+    // 1 on thin veins where the sine crosses 0, falling steeply off them.
+    const double s = 1.0 - std::abs(std::sin(kPi * (p.x + kMarbleSwirl * turbulence(p))));
+    return unitClamp(s * s * s);
+  }
   case TextureKind::Wood:
     return unitClamp(fraction(std::sqrt(p.x * p.x + p.y * p.y) + kWoodWobble * turbulence(p)));
   }

@@ -4,7 +4,8 @@
 //   stripes   slabs of thickness 1 across x: 0 for floor(x) even, 1 odd
 //   gradient  x - floor(x): a ramp along x, repeating every unit
 //   noise     0.5 + 0.5 fractalNoise(p), clamped
-//   marble    veins across x: 0.5 - 0.5 cos(2 pi (x + kMarbleSwirl turbulence(p)))
+//   marble    thin veins across x, one per unit: s^3 with
+//             s = 1 - |sin(pi (x + kMarbleSwirl turbulence(p)))|
 //   wood      rings around the z axis: the fractional part of
 //             sqrt(x^2 + y^2) + kWoodWobble turbulence(p)
 // A cell boundary belongs to the cell above it (floor). A point with a
@@ -16,7 +17,7 @@
 
 namespace prism {
 
-constexpr double kMarbleSwirl = 1.5;
+constexpr double kMarbleSwirl = 0.75;
 constexpr double kWoodWobble = 0.1;
 
 double patternValue(TextureKind kind, const Vec3& p);

@@ -142,6 +142,13 @@ const Material& materialOf(const Scene& scene, std::size_t sphere) {
   return scene.materials[scene.shapes<Sphere>().at(sphere).material];
 }
 
+// The texture lookup of a sphere's material at a world point.
+TextureLookup lookupAt(const Scene& scene, std::size_t sphere, const Vec3& world) {
+  TextureLookup lookup;
+  textureAt(materialOf(scene, sphere), world, &lookup);
+  return lookup;
+}
+
 TEST(Texture, KeywordsAmendTheCurrentSurface) {
   const Scene scene = parseScene(R"(
 surface 0.8 0.6 0.4  1 0 0  1 1.5
@@ -238,9 +245,7 @@ sphere 5 1 0 1
   EXPECT_NE(spheres[0].material, spheres[1].material);
   EXPECT_NE(spheres[1].material, spheres[3].material);
   const auto valueAt = [&](std::size_t sphere, const Vec3& world) {
-    TextureLookup lookup;
-    textureAt(materialOf(scene, sphere), world, &lookup);
-    return lookup;
+    return lookupAt(scene, sphere, world);
   };
   // The top of each sphere: object point (0, 1, 0), gradient 0.
   // The point (0.5, 0, 0.866) of object space: x / 4 = 0.125.
@@ -274,9 +279,7 @@ pop
 )",
                                  "s.sc");
   const auto valueAt = [&](std::size_t sphere, const Vec3& world) {
-    TextureLookup lookup;
-    textureAt(materialOf(scene, sphere), world, &lookup);
-    return lookup.value;
+    return lookupAt(scene, sphere, world).value;
   };
   EXPECT_EQ(valueAt(0, {10.75, 0, 0}), 0.25);
   EXPECT_EQ(valueAt(1, {10.75, 0, 0}), 0.75);

@@ -190,6 +190,10 @@ TEST(Texture, Errors) {
             "t.sc:1:14: error: texture: SCALE must be positive, found '0'");
   EXPECT_EQ(test::sceneErrorsOf("texture wood 1  1 1 1  -1 0 0  1\n"),
             "t.sc:1:24: error: texture: KDR must not be negative, found '-1'");
+  EXPECT_EQ(test::sceneErrorsOf("texture checker big  1 1 1  1 0 0  1\n"),
+            "t.sc:1:17: error: texture: expected SCALE (a number) but found 'big'");
+  EXPECT_EQ(test::sceneErrorsOf("texture checker 1  1 1 1  1 0 0  1e999\n"),
+            "t.sc:1:34: error: texture: E is not a finite number ('1e999')");
   EXPECT_EQ(test::sceneErrorsOf("texture wood 1  1 1 1  1 0 0\n"),
             "t.sc:1:1: error: texture: expected E but reached the end of the file");
   EXPECT_EQ(test::sceneErrorsOf("texture_space 1 0 0 0  0 1 0 0  0 0 1 0\n"),

@@ -85,6 +85,8 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
   c.same("csg operand counts", a.csgOperands.size(), b.csgOperands.size());
   c.same("nested csg counts", a.csgNodes.size(), b.csgNodes.size());
   c.same("blob counts", a.shapes<Blob>().size(), b.shapes<Blob>().size());
+  c.same("blob component counts", a.blobComponents.size(), b.blobComponents.size());
+  c.same("mesh operand triangle counts", a.meshTriangles.size(), b.meshTriangles.size());
   if (c.problem()) return;
 
   std::vector<PrimitiveRef> order;

@@ -269,6 +269,23 @@ TEST_F(Cli, PixelPrintsTheRayTree) {
   EXPECT_NE(run.out.find("reflected ray, depth 2"), std::string::npos) << run.out;
 }
 
+// A ray that hits a CSG node is reported with the operand whose surface it
+// met: the centre ray enters the box's face at z = 1 inside the subtracted
+// sphere, so the surface it hits is the sphere's, at z = 0.5.
+TEST_F(Cli, PixelNamesTheCsgOperandHit) {
+  const std::string s = write("c.sc", "eye 0 0 4\nlookat 0 0 0\nlight 2 3 4 30 30 30\n"
+                                      "csg difference\n"
+                                      "  box -1 -1 -1 1 1 1\n"
+                                      "  sphere 0 0 1 0.5\n"
+                                      "end\n")
+                            .string();
+  const RunResult run = prism("render " + s + " --size 21 21 --pixel 10 10");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("hits csg #0 (c.sc:4), operand sphere (c.sc:6) at t = 3.5,"),
+            std::string::npos)
+      << run.out;
+}
+
 TEST_F(Cli, RendersEveryShippedScene) {
   for (const char* name :
        {"table.sc", "glass.sc", "chex.sc", "tree.sc", "tree-solid.sc", "solids.sc", "torus.sc",

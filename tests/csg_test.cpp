@@ -517,7 +517,8 @@ TEST(Csg, ScErrors) {
             "t.sc:1:1: error: csg union: needs at least two operands, found 1");
   EXPECT_EQ(sceneErrorsOf("csg difference\nend"),
             "t.sc:1:1: error: csg difference: needs at least two operands, found 0");
-  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1\nend"), "t.sc:2:1: error: end without matching csg");
+  EXPECT_EQ(sceneErrorsOf("sphere 0 0 0 1\nend"),
+            "t.sc:2:1: error: end without matching csg or mesh");
   EXPECT_EQ(sceneErrorsOf("csg union" + operands), "t.sc:1:1: error: csg without matching end");
   EXPECT_EQ(sceneErrorsOf("csg xor" + operands + " end"),
             "t.sc:1:5: error: csg: expected union, intersection or difference but found 'xor'");
@@ -525,7 +526,8 @@ TEST(Csg, ScErrors) {
             "t.sc:1:1: error: csg: expected union, intersection or difference but reached the "
             "end of the file\n"
             "t.sc:1:1: error: csg without matching end");
-  const std::string closed = " (spheres, boxes, cylinders, capped cones, tori and csg blocks can)";
+  const std::string closed =
+      " (spheres, boxes, cylinders, capped cones, tori, blobs, meshes and csg blocks can)";
   EXPECT_EQ(sceneErrorsOf("csg union polygon 3  0 0 0  1 0 0  0 1 0" + operands + " end"),
             "t.sc:1:11: error: polygon: not a closed solid, so it cannot be an operand of csg" +
                 closed);
@@ -535,6 +537,9 @@ TEST(Csg, ScErrors) {
   EXPECT_EQ(sceneErrorsOf("csg union disc 0 0 0 0 0 1 1" + operands + " end"),
             "t.sc:1:11: error: disc: not a closed solid, so it cannot be an operand of csg" +
                 closed);
+  EXPECT_EQ(
+      sceneErrorsOf("csg union quadric 1 1 1 0 0 0 0 0 0 -1 -2 -2 -2 2 2 2" + operands + " end"),
+      "t.sc:1:11: error: quadric: not a closed solid, so it cannot be an operand of csg" + closed);
   EXPECT_EQ(sceneErrorsOf("csg union triangle 0 0 0 1 0 0 0 1 0" + operands + " end"),
             "t.sc:1:11: error: triangle: not a closed solid, so it cannot be an operand of csg" +
                 closed);
@@ -546,8 +551,8 @@ TEST(Csg, ScErrors) {
   EXPECT_EQ(sceneErrorsOf("csg union capped_cone 0 0 0 1 0 0 1 0 torus 0 0 0 0 0 1 1 0.2 end"), "");
   // push/pop and csg/end nest, each closed by its own word.
   EXPECT_EQ(sceneErrorsOf("csg union push" + operands + " end pop end"),
-            "t.sc:1:46: error: end without matching csg (a push is open: close it with 'pop' "
-            "first)");
+            "t.sc:1:46: error: end without matching csg or mesh (a push is open: close it with "
+            "'pop' first)");
   EXPECT_EQ(sceneErrorsOf("push csg union" + operands + " pop end pop"),
             "t.sc:1:46: error: pop without matching push (a csg block is open: close it with "
             "'end' first)");
@@ -583,8 +588,8 @@ TEST(Csg, BlocksBalanceWithinEachFile) {
                 ":1:1: error: csg without matching end");
   EXPECT_EQ(loadErrorsOf(dir.path() / "b.sc"),
             (dir.path() / "close.sc").lexically_normal().string() +
-                ":1:1: error: end without matching csg in this file (csg and end must balance "
-                "within each file)");
+                ":1:1: error: end without matching csg or mesh in this file (blocks and their end "
+                "must balance within each file)");
 }
 
 // ---------------------------------------------------------------------------

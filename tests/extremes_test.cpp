@@ -194,6 +194,11 @@ long double surfaceDistance(const Triangle& tri, const ShapeArrays& arrays, cons
   return d / std::sqrt(n2);
 }
 
+// A closed mesh's surface near a point is the nearest triangle's.
+long double surfaceDistance(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& p) {
+  return surfaceDistance(trianglesOf(m, arrays)[nearestTriangle(m, arrays, p)], arrays, p);
+}
+
 // A CSG node's surface lies on its leaves' surfaces: the nearest of them.
 long double surfaceDistance(const Csg& node, const ShapeArrays& arrays, const Vec3& p) {
   long double best = std::numeric_limits<long double>::infinity();

@@ -19,6 +19,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace prism {
 namespace {
@@ -149,6 +150,29 @@ polygon 4  -50 -50 3  -50 50 3  50 50 3  50 -50 3
   const Color fog(0.1, 0.2, 0.3);
   expectColor(traced(scene, Vec3(0.0), {0, 0, -1}),
               fogged(0.25, fog, 2.0, fogged(0.25, fog, 5.0, Color(0.5))));
+}
+
+// Eye rays traced as a bundle (how the renderer sends them) meet the same
+// fog and absorption as one by one.
+TEST(Media, BundlesOfEyeRaysAreFoggedLikeSingleRays) {
+  const Scene scene = parseScene(std::string("fog 0.2 0.4 0.6 0.7\nambient 1 1 1\n") + kSlab +
+                                     "surface 0.5 0.5 0.5  1 0 0  1 1\n"
+                                     "polygon 4  -50 -50 -9  50 -50 -9  50 50 -9  -50 50 -9\n",
+                                 "bundle.sc");
+  const auto accel = makeAccel(scene, AccelKind::Bvh);
+  Tracer tracer(scene, *accel, 5);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 8; ++i) // through the slab, and past it to the wall
+    rays.push_back({Vec3(0.0), glm::normalize(Vec3(0.1 * i, 0.05 * i * i, -1.0))});
+  rays.push_back({Vec3(0.0), Vec3(0.0, 1.0, 0.0)});
+  std::vector<Color> bundled(rays.size());
+  RayCounts counts;
+  tracer.traceBundle(rays, bundled, counts);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    RayCounts one;
+    EXPECT_EQ(bundled[i], tracer.trace(rays[i], 1, one)) << "ray " << i;
+  }
+  EXPECT_EQ(bundled[8], Color(0.2, 0.4, 0.6)); // straight up: misses, the fog's colour
 }
 
 TEST(Media, TheBailoutBoundCoversTheFogColour) {

@@ -176,6 +176,30 @@ TEST(RenderSession, CameraAndAmbientEditsRestartWithTheEditedScene) {
   EXPECT_EQ(session.progress().restarts, 2u);
 }
 
+// A scene without fog gains it by an edit (its tracers take the fog's path
+// from then on) and loses it again at density 0. The expected pictures are
+// fresh renders of the files: one with the `fog` line, one without.
+TEST(RenderSession, FogEditsRenderAsTheFileSaysAndDensityZeroIsTheFogFreePicture) {
+  const Scene clear = parseScene(kTwoRooms, "rooms.sc");
+  const Scene fogged =
+      parseScene(std::string(kTwoRooms) + "fog 0.5 0.6 0.7  0.08\n", "rooms-fog.sc");
+  const RenderSettings s = smallSettings();
+  const RenderResult clearFilm = renderDirect(clear, s);
+  const RenderResult foggedFilm = renderDirect(fogged, s);
+  ASSERT_FALSE(foggedFilm.film.radiance == clearFilm.film.radiance); // the fog shows
+
+  RenderSession session(clear, s);
+  session.waitForResult(); // pass 1 complete: a fog edit must not keep it, as thresh may
+  session.apply({.fog = Fog{Color(0.5, 0.6, 0.7), 0.08}});
+  EXPECT_EQ(session.progress().restarts, 1u);
+  expectSameFilm(session.waitForResult(), foggedFilm);
+
+  // Density 0 with the colour kept: no fog, the same bits as no `fog` line.
+  session.apply({.fog = Fog{Color(0.5, 0.6, 0.7), 0.0}});
+  EXPECT_EQ(session.progress().restarts, 2u);
+  expectSameFilm(session.waitForResult(), clearFilm);
+}
+
 TEST(RenderSession, OneApplyChangesSeveralValuesWithOneRestart) {
   const Scene scene = parseScene(kTwoRooms, "rooms.sc");
   RenderSettings s = smallSettings();

@@ -651,6 +651,85 @@ TEST(ViewControllerReload, ACommandLineCameraIsAnEditOverTheFile) {
 }
 
 // ---------------------------------------------------------------------------
+// Fog, edited like ambient
+
+bool sameFog(const Fog& a, const Fog& b) { return a.color == b.color && a.density == b.density; }
+
+// kMain with fog in it, and the same scene without (clear.sc), beside one light.
+const char* kFogLine = "fog 0.3 0.3 0.35  0.1\n";
+Scene writeFoggedScene(const ScratchDir& dir) {
+  writeFile(dir / "main.sc", std::string(kMain) + kFogLine);
+  writeFile(dir / "clear.sc", kMain);
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
+  return loadScene(dir / "main.sc");
+}
+
+// Each fog edit is one undo step that restarts the render; "fog" is listed
+// among the edits; Back to the file's values puts the file's fog back,
+// undoably. Density 0 shows the picture of the file without its `fog` line.
+TEST(ViewControllerFog, EditsUndoRedoAndRevertLikeAmbient) {
+  ScratchDir dir;
+  const Scene scene = writeFoggedScene(dir);
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  const Fog file{Color(0.3, 0.3, 0.35), 0.1}; // kFogLine
+  EXPECT_TRUE(sameFog(c.fileValues().fog, file));
+  c.update();
+  std::uint64_t restarts = c.progress().restarts;
+
+  const Fog thick{Color(0.8, 0.7, 0.6), 0.4}, none{Color(0.8, 0.7, 0.6), 0.0};
+  c.apply(FogEdit{thick});
+  expectRestarted(c, restarts);
+  c.apply(FogEdit{none});
+  expectRestarted(c, restarts);
+  EXPECT_EQ(c.edits().names(), std::vector<std::string>{"fog"});
+  EXPECT_EQ(finishedImage(c), renderOf(loadScene(dir / "clear.sc"), options));
+
+  ASSERT_TRUE(c.undo());
+  expectRestarted(c, restarts);
+  EXPECT_TRUE(sameFog(c.scene().fog, thick));
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameFog(c.scene().fog, file));
+  EXPECT_FALSE(c.canUndo());
+  ASSERT_TRUE(c.redo());
+  ASSERT_TRUE(c.redo());
+  EXPECT_TRUE(sameFog(c.scene().fog, none));
+  EXPECT_FALSE(c.canRedo());
+
+  c.apply(RevertToFile{});
+  EXPECT_TRUE(sameFog(c.scene().fog, file));
+  EXPECT_FALSE(c.edits().sceneEdited());
+  ASSERT_TRUE(c.undo());
+  EXPECT_TRUE(sameFog(c.scene().fog, none));
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// A reload puts the user's fog over the re-read file (which changed its
+// own fog), and says so; a revert then goes to the new file's fog.
+TEST(ViewControllerFog, AReloadKeepsTheFogEdit) {
+  ScratchDir dir;
+  const Scene scene = writeFoggedScene(dir);
+  ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  const Fog edited{Color(0.9, 0.85, 0.8), 0.25};
+  c.apply(FogEdit{edited});
+
+  writeFile(dir / "main.sc", std::string(kMain) + "fog 0.1 0.1 0.1  0.02\n");
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\nlight -2 3 4 10 10 10\n");
+  reloadUntil(c, 2);
+  EXPECT_EQ(c.keptEdits().kept, std::vector<std::string>{"fog"});
+  EXPECT_TRUE(sameFog(c.scene().fog, edited));
+  EXPECT_TRUE(sameFog(c.fileValues().fog, Fog{Color(0.1), 0.02}));
+  // The picture is the new file's, with the edited fog written in it.
+  writeFile(dir / "expected.sc", std::string(kMain) + "fog 0.9 0.85 0.8  0.25\n");
+  EXPECT_EQ(finishedImage(c), renderOf(loadScene(dir / "expected.sc"), options));
+
+  c.apply(RevertToFile{});
+  EXPECT_TRUE(sameFog(c.scene().fog, Fog{Color(0.1), 0.02}));
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// ---------------------------------------------------------------------------
 // Save scene as
 
 TEST(ViewControllerSaveScene, WritesTheEditedSceneThatRendersTheSamePicture) {
@@ -665,6 +744,7 @@ TEST(ViewControllerSaveScene, WritesTheEditedSceneThatRendersTheSamePicture) {
   c.apply(CameraEdit{camera});
   c.apply(LightEdit{0, light});
   c.apply(AmbientEdit{Color(0.05, 0.04, 0.03)});
+  c.apply(FogEdit{Fog{Color(0.5, 0.55, 0.6), 0.125}});
 
   const fs::path saved = dir / "sub" / "view.sc";
   fs::create_directory(dir / "sub");
@@ -679,10 +759,11 @@ TEST(ViewControllerSaveScene, WritesTheEditedSceneThatRendersTheSamePicture) {
   ASSERT_EQ(back.lights.size(), 1u);
   EXPECT_TRUE(sameLight(back.lights[0], light));
   EXPECT_EQ(back.ambient, Color(0.05, 0.04, 0.03));
+  EXPECT_TRUE(sameFog(back.fog, Fog{Color(0.5, 0.55, 0.6), 0.125}));
   EXPECT_EQ(back.files.size(), 1u);
   const std::string text = slurp(saved);
   EXPECT_NE(text.find("# Saved by prism view from " + (dir / "main.sc").string() +
-                      ", with edits of: camera, ambient, light 1."),
+                      ", with edits of: camera, ambient, fog, light 1."),
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("\ninclude"), std::string::npos) << text; // flattened

@@ -141,6 +141,25 @@ quit
   std::printf("%s", r.out.c_str() + report);
 }
 
+// A script's edit in the window against the same edit made for `prism
+// render`: runs `script` on dir/a.sc in the previewer (it must save
+// saved.tiff), then `prism render` with the arguments `edited` (what Save
+// must write) and `unedited` (what it must not: the edit changes the picture).
+void expectSaveIsTheEditedRender(const fs::path& dir, const std::string& script,
+                                 const std::string& edited, const std::string& unedited) {
+  writeFile(dir / "s.txt", script);
+  const RunResult r = runInXvfb(dir, kPrism + " view a.sc --script s.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  ASSERT_EQ(run(dir, kPrism + " render " + edited + " -o edited.tiff -q").exitCode, 0);
+  ASSERT_EQ(run(dir, kPrism + " render " + unedited + " -o unedited.tiff -q").exitCode, 0);
+  const auto saved = readPicture(dir / "saved.tiff");
+  const auto editedPicture = readPicture(dir / "edited.tiff");
+  const auto uneditedPicture = readPicture(dir / "unedited.tiff");
+  ASSERT_TRUE(saved && editedPicture && uneditedPicture);
+  EXPECT_TRUE(sameRgb(*saved, *editedPicture)) << "Save differs from prism render " << edited;
+  EXPECT_FALSE(sameRgb(*editedPicture, *uneditedPicture)) << "the script's edit changed nothing";
+}
+
 // The surfaces beyond spheres, polygons and cones (boxes, capped cylinders
 // and cones, discs, a torus, a quadric, a blob, CSG) in the previewer: after
 // a light is moved, Save writes what `prism render` writes of the scene with
@@ -166,17 +185,19 @@ TEST(ViewE2E, TheNewSurfacesShowAndSaveWhatRenderWrites) {
   };
   writeFile(dir / "a.sc", surfaces("3 4 4"));
   writeFile(dir / "b.sc", surfaces("-2 5 3")); // a.sc after the script's light edit
-  writeFile(dir / "s.txt", "wait pass1\nlight 1 -2 5 3\nwait done\nsave saved.tiff\nquit\n");
-  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
-  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  ASSERT_EQ(run(dir.path(), kPrism + " render b.sc -o ref.tiff -q").exitCode, 0);
-  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o before.tiff -q").exitCode, 0);
-  const auto saved = readPicture(dir / "saved.tiff");
-  const auto reference = readPicture(dir / "ref.tiff");
-  const auto before = readPicture(dir / "before.tiff");
-  ASSERT_TRUE(saved && reference && before);
-  EXPECT_TRUE(sameRgb(*saved, *reference)) << "Save differs from prism render";
-  EXPECT_FALSE(sameRgb(*reference, *before)) << "moving the light changed nothing";
+  expectSaveIsTheEditedRender(
+      dir.path(), "wait pass1\nlight 1 -2 5 3\nwait done\nsave saved.tiff\nquit\n", "b.sc", "a.sc");
+}
+
+// The script's `fog` fogs the window's scene as a `fog` line fogs the file:
+// Save writes what `prism render` writes of the scene with that line.
+TEST(ViewE2E, FogFromAScriptSavesWhatRenderOfTheFoggedFileWrites) {
+  ScratchDir dir;
+  writeFile(dir / "a.sc", scene("3 4 4"));
+  writeFile(dir / "b.sc", scene("3 4 4") + "fog 0.6 0.65 0.7  0.12\n");
+  expectSaveIsTheEditedRender(
+      dir.path(), "wait pass1\nfog 0.6 0.65 0.7 0.12\nwait done\nsave saved.tiff\nquit\n", "b.sc",
+      "a.sc");
 }
 
 // The script's `no-aa on` switches antialiasing off as `prism render --no-aa`
@@ -184,17 +205,8 @@ TEST(ViewE2E, TheNewSurfacesShowAndSaveWhatRenderWrites) {
 TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {
   ScratchDir dir;
   writeFile(dir / "a.sc", scene("3 4 4"));
-  writeFile(dir / "s.txt", "wait done\nno-aa on\nwait done\nsave saved.tiff\nquit\n");
-  const RunResult r = runInXvfb(dir.path(), kPrism + " view a.sc --script s.txt");
-  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o plain.tiff --no-aa -q").exitCode, 0);
-  ASSERT_EQ(run(dir.path(), kPrism + " render a.sc -o aa.tiff -q").exitCode, 0);
-  const auto saved = readPicture(dir / "saved.tiff");
-  const auto plain = readPicture(dir / "plain.tiff");
-  const auto antialiased = readPicture(dir / "aa.tiff");
-  ASSERT_TRUE(saved && plain && antialiased);
-  EXPECT_TRUE(sameRgb(*saved, *plain)) << "Save differs from prism render --no-aa";
-  EXPECT_FALSE(sameRgb(*plain, *antialiased)) << "the scene has nothing to antialias";
+  expectSaveIsTheEditedRender(dir.path(), "wait done\nno-aa on\nwait done\nsave saved.tiff\nquit\n",
+                              "a.sc --no-aa", "a.sc");
 }
 
 // The sweep table beside the scene (`prism sweep`'s CSV, here written by hand):

@@ -554,6 +554,8 @@ TEST_F(ViewInput, EveryOtherControlByMouse) {
   };
   changesOnDrag("Lights/ambient");
   changesOnDrag("Lights/light 2/intensity");
+  changesOnDrag("Fog/fog colour");
+  changesOnDrag("Fog/fog density");
   changesOnDrag("Camera/lookat");
   // The pixel's ray tree closes by its button, the key help by its own.
   ASSERT_TRUE(xdotool(x_.display(), "mousemove 100 380 click 1"));

@@ -115,6 +115,26 @@ TEST(ViewScript, ParsesTheInspectionAndComparisonActions) {
             "s.txt:5:9: error: compare: expected off, flip or split, got 'sideways'");
 }
 
+TEST(ViewScript, ParsesFogAndReportsItsErrors) {
+  const auto a = parseScript("fog 0.5 0.6 0.7 0.08\n\nfog 0 0 0 0\n", "s.txt");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].op, ScriptOp::Fog);
+  EXPECT_EQ(a[0].values, std::vector<double>({0.5, 0.6, 0.7, 0.08}));
+  EXPECT_EQ(a[1].line, 3);
+  EXPECT_EQ(a[1].values, std::vector<double>({0.0, 0.0, 0.0, 0.0}));
+  const auto errors = errorsOf("fog 0.5 0.5 0.5\n"
+                               "fog 1 1 1 -0.5\n"
+                               "fog 1 -1 1 0.1\n"
+                               "fog 1 1 x 0.1\n"
+                               "fog 1 1 1 0.1 2\n");
+  ASSERT_EQ(errors.size(), 5u);
+  EXPECT_EQ(errors[0].format(), "s.txt:1:1: error: fog: expected R G B DENSITY, got 3 arguments");
+  EXPECT_EQ(errors[1].format(), "s.txt:2:11: error: fog density must be in [0, 1e+30], got -0.5");
+  EXPECT_EQ(errors[2].format(), "s.txt:3:7: error: fog colour must be in [0, 1e+30], got -1");
+  EXPECT_EQ(errors[3].format(), "s.txt:4:9: error: fog colour: expected a number, got 'x'");
+  EXPECT_EQ(errors[4].format(), "s.txt:5:15: error: fog: expected R G B DENSITY, got 5 arguments");
+}
+
 TEST(ViewScript, ParsesPrintSweep) {
   const auto a = parseScript("print sweep\n", "s.txt");
   ASSERT_EQ(a.size(), 1u);

@@ -83,7 +83,7 @@ void sceneSection(ViewController& c, WindowState& state) {
     ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
   if (ui::button("Back to the file's values")) c.apply(RevertToFile{});
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the camera, the lights and ambient as the scene file says (undoable)");
+    ImGui::SetTooltip("the camera, the lights, ambient and fog as the scene file says (undoable)");
   if (c.reloading()) dimText("Reading the scene files...");
   keptEditsText(c);
   for (const std::string& w : c.sceneWarnings())
@@ -113,13 +113,19 @@ void renderSection(ViewController& c, WindowState& state) {
   if (changed) edit(c, state, [&] { c.apply(SettingsEdit{s}); });
 }
 
+// A colour (ambient, the fog's) dragged at a pace that suits its size. Never
+// negative, as the scene language requires (docs/scene-language.md).
+bool dragColour(const char* label, Color& colour) {
+  const float speed = dragSpeed(std::max(0.05, maxComponent(colour)));
+  if (!ui::dragDoubles(label, &colour[0], 3, speed, "%.3f")) return false;
+  colour = glm::max(colour, Color(0.0));
+  return true;
+}
+
 void lightsSection(ViewController& c, WindowState& state) {
   const Scene& scene = c.scene();
-  Color ambient = scene.ambient;
-  if (ui::dragDoubles("ambient", &ambient[0], 3, dragSpeed(std::max(0.05, maxComponent(ambient))),
-                      "%.3f")) {
-    edit(c, state, [&] { c.apply(AmbientEdit{glm::max(ambient, Color(0.0))}); });
-  }
+  if (Color ambient = scene.ambient; dragColour("ambient", ambient))
+    edit(c, state, [&] { c.apply(AmbientEdit{ambient}); });
   const double extent = glm::length(scene.camera.eye - scene.camera.lookat);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     Light light = scene.lights[i];
@@ -143,6 +149,29 @@ void lightsSection(ViewController& c, WindowState& state) {
     if (ui::button("reset")) c.apply(ResetLight{i});
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the file's position and intensity");
   }
+}
+
+void fogTooltip() {
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Density 0 is no fog (the colour then does nothing).\n"
+                      "Density is per unit of scene length: across a distance d\n"
+                      "exp(-density d) of the light gets through and the rest is\n"
+                      "the fog's colour; at 1 / density, 37%% gets through.");
+}
+
+// The fog as one edit of colour and density; density never negative (a
+// typed NaN becomes 0 too: std::max keeps its first argument).
+void fogSection(ViewController& c, WindowState& state) {
+  Fog fog = c.scene().fog;
+  bool changed = dragColour("fog colour", fog.color);
+  fogTooltip();
+  if (ui::dragDoubles("fog density", &fog.density, 1, dragSpeed(std::max(0.05, fog.density)),
+                      "%.4f")) {
+    fog.density = std::max(0.0, fog.density);
+    changed = true;
+  }
+  fogTooltip();
+  if (changed) edit(c, state, [&] { c.apply(FogEdit{fog}); });
 }
 
 // Whether `camera` can be rendered (docs/image-formation.md): a view direction, `up` not
@@ -425,6 +454,7 @@ void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& f
   };
   section("Render", [&] { renderSection(c, state); });
   section("Lights", [&] { lightsSection(c, state); });
+  section("Fog", [&] { fogSection(c, state); });
   section("Camera", [&] { cameraSection(c, state); });
   section("Display", [&] { displaySection(c, state); });
   section("View", [&] { viewSection(c, state, shownZoom); });

@@ -15,6 +15,13 @@ bool same(const Light& a, const Light& b) {
   return a.position == b.position && a.intensity == b.intensity;
 }
 
+bool same(const Fog& a, const Fog& b) { return a.color == b.color && a.density == b.density; }
+
+// Both unset, or both set to the same value.
+template <class T> bool same(const std::optional<T>& a, const std::optional<T>& b) {
+  return a.has_value() == b.has_value() && (!a || same(*a, *b));
+}
+
 bool same(const RenderSettings& a, const RenderSettings& b) {
   return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth &&
          a.thresh == b.thresh && a.jitter == b.jitter && a.noAa == b.noAa &&
@@ -29,6 +36,7 @@ std::vector<std::string> UserEdits::names() const {
   std::vector<std::string> names;
   if (camera) names.push_back("camera");
   if (ambient) names.push_back("ambient");
+  if (fog) names.push_back("fog");
   for (const auto& [index, light] : lights)
     names.push_back("light " + std::to_string(index + 1));
   return names;
@@ -42,14 +50,14 @@ Light UserEdits::lightOver(const FileValues& file, std::size_t index) const {
 void UserEdits::applyTo(Scene& scene) const {
   if (camera) scene.camera = *camera;
   if (ambient) scene.ambient = *ambient;
+  if (fog) scene.fog = *fog;
   for (const auto& [index, light] : lights)
     if (index < scene.lights.size()) scene.lights[index] = light;
 }
 
 bool operator==(const UserEdits& a, const UserEdits& b) {
-  const bool cameras =
-      a.camera.has_value() == b.camera.has_value() && (!a.camera || same(*a.camera, *b.camera));
-  return same(a.settings, b.settings) && cameras && a.ambient == b.ambient &&
+  return same(a.settings, b.settings) && same(a.camera, b.camera) && a.ambient == b.ambient &&
+         same(a.fog, b.fog) &&
          std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(),
                     [](const auto& x, const auto& y) {
                       return x.first == y.first && same(x.second, y.second);
@@ -67,12 +75,14 @@ UserEdits withEdit(UserEdits edits, const SceneEdit& edit, std::size_t lightCoun
                    edits.lights[e.index] = e.light;
                  },
                  [&](const AmbientEdit& e) { edits.ambient = e.ambient; },
+                 [&](const FogEdit& e) { edits.fog = e.fog; },
                  [&](const CameraEdit& e) { edits.camera = e.camera; },
                  [&](const ResetLight& e) { edits.lights.erase(e.index); },
                  [&](const ResetCamera&) { edits.camera.reset(); },
                  [&](const RevertToFile&) {
                    edits.camera.reset();
                    edits.ambient.reset();
+                   edits.fog.reset();
                    edits.lights.clear();
                  },
              },
@@ -88,6 +98,7 @@ SessionEdit changeToShow(const UserEdits& edits, const FileValues& file, const S
     change.camera = camera;
   if (const Color ambient = edits.ambientOver(file); ambient != shown.ambient)
     change.ambient = ambient;
+  if (const Fog fog = edits.fogOver(file); !same(fog, shown.fog)) change.fog = fog;
   for (std::size_t i = 0; i < shown.lights.size(); ++i)
     if (const Light light = edits.lightOver(file, i); !same(light, shown.lights[i]))
       change.lights.emplace_back(i, light);

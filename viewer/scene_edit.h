@@ -30,6 +30,10 @@ struct LightEdit {
 struct AmbientEdit {
   Color ambient{0.0};
 };
+// The fog's colour and density (density 0: no fog).
+struct FogEdit {
+  Fog fog;
+};
 struct CameraEdit {
   CameraSpec camera;
 };
@@ -38,18 +42,21 @@ struct ResetLight {
   std::size_t index = 0;
 };
 struct ResetCamera {};
-struct RevertToFile {}; // camera, ambient and lights; the render settings stay
+struct RevertToFile {}; // camera, ambient, fog and lights; the render settings stay
 
-using SceneEdit = std::variant<SettingsEdit, LightEdit, AmbientEdit, CameraEdit, ResetLight,
-                               ResetCamera, RevertToFile>;
+using SceneEdit = std::variant<SettingsEdit, LightEdit, AmbientEdit, FogEdit, CameraEdit,
+                               ResetLight, ResetCamera, RevertToFile>;
 
 // The scene values as the files say them: what resets go back to.
 struct FileValues {
   CameraSpec camera;
   Color ambient{0.0};
+  Fog fog;
   std::vector<Light> lights;
 
-  static FileValues of(const Scene& scene) { return {scene.camera, scene.ambient, scene.lights}; }
+  static FileValues of(const Scene& scene) {
+    return {scene.camera, scene.ambient, scene.fog, scene.lights};
+  }
 };
 
 // What the user changed: the render settings, and each scene value the user
@@ -58,16 +65,18 @@ struct UserEdits {
   RenderSettings settings;
   std::optional<CameraSpec> camera;
   std::optional<Color> ambient;
+  std::optional<Fog> fog;
   std::map<std::size_t, Light> lights; // by 0-based index
 
-  bool sceneEdited() const { return camera || ambient || !lights.empty(); }
-  // The edited scene values, for the panel: "camera", "ambient", "light 2", ...
+  bool sceneEdited() const { return camera || ambient || fog || !lights.empty(); }
+  // The edited scene values, for the panel: "camera", "ambient", "fog", "light 2", ...
   std::vector<std::string> names() const;
   // The values shown: the file's, with these edits over them.
   CameraSpec cameraOver(const FileValues& file) const { return camera.value_or(file.camera); }
   Color ambientOver(const FileValues& file) const { return ambient.value_or(file.ambient); }
+  Fog fogOver(const FileValues& file) const { return fog.value_or(file.fog); }
   Light lightOver(const FileValues& file, std::size_t index) const;
-  // Puts the edited camera, ambient and lights into `scene` (lights the scene
+  // Puts the edited camera, ambient, fog and lights into `scene` (lights the scene
   // does not have are skipped).
   void applyTo(Scene& scene) const;
 };

@@ -447,6 +447,7 @@ void ViewApp::start(const ScriptAction& a) {
   case ScriptOp::Jitter:
   case ScriptOp::NoAa: controller_->apply(SettingsEdit{edited(a)}); break;
   case ScriptOp::Ambient: controller_->apply(AmbientEdit{vec(0)}); break;
+  case ScriptOp::Fog: controller_->apply(FogEdit{Fog{vec(0), a.values[3]}}); break;
   case ScriptOp::Light:
   case ScriptOp::Intensity: {
     const std::size_t i = lightIndex(a);

@@ -49,7 +49,7 @@ public:
 
   // Edits. Every change of a value goes through apply(), with one of the
   // SceneEdit alternatives (viewer/scene_edit.h: SettingsEdit, LightEdit,
-  // AmbientEdit, CameraEdit, and the resets ResetLight, ResetCamera,
+  // AmbientEdit, FogEdit, CameraEdit, and the resets ResetLight, ResetCamera,
   // RevertToFile), whoever makes it: a panel, the mouse, a script. It cancels
   // the work in flight and restarts refinement (an edit that changes nothing
   // does neither), and becomes one undo step. A LightEdit of a light the
@@ -82,7 +82,7 @@ public:
 
   // What the reloads did with the user's edits, for the panel, until the
   // user's next edit (or undo, redo): `kept` lists the edited values the last
-  // reload put over the re-read files ("camera", "ambient", "light 2");
+  // reload put over the re-read files ("camera", "ambient", "fog", "light 2");
   // `dropped` the edits of lights that a file no longer has ("light 5"),
   // which are gone from the undo history too. The render settings always
   // stay and are not listed.

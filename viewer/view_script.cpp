@@ -113,6 +113,7 @@ const std::map<std::string, ScriptOp>& keywords() {
       {"jitter", ScriptOp::Jitter},
       {"no-aa", ScriptOp::NoAa},
       {"ambient", ScriptOp::Ambient},
+      {"fog", ScriptOp::Fog},
       {"light", ScriptOp::Light},
       {"intensity", ScriptOp::Intensity},
       {"orbit", ScriptOp::Orbit},
@@ -179,8 +180,10 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
       a.values.push_back(p.number(t[1], t[0].text, n.min, n.max));
     return;
   }
-  auto numbers = [&](std::size_t first, const char* what, double min) {
-    for (std::size_t i = first; i < t.size(); ++i)
+  // Arguments first..last (by default to the end of the line), each at least `min`.
+  auto numbers = [&](std::size_t first, const char* what, double min,
+                     std::size_t last = std::size_t(-1)) {
+    for (std::size_t i = first; i < t.size() && i <= last; ++i)
       a.values.push_back(p.number(t[i], what, min, kHuge));
   };
   switch (a.op) {
@@ -200,6 +203,11 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     return;
   case ScriptOp::Ambient:
     if (p.arity(t, 3, "R G B")) numbers(1, "ambient", 0.0);
+    return;
+  case ScriptOp::Fog: // as the scene language's `fog`: every number >= 0
+    if (!p.arity(t, 4, "R G B DENSITY")) return;
+    numbers(1, "fog colour", 0.0, 3);
+    numbers(4, "fog density", 0.0);
     return;
   case ScriptOp::Light:
     if (!p.arity(t, 4, "N X Y Z")) return;

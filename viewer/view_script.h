@@ -10,6 +10,7 @@
 //   frames N                 let N frames pass
 //   timeout SECONDS          how long any later action may block [60]
 //   depth D | thresh T | jitter on|off | no-aa on|off | ambient R G B
+//   fog R G B DENSITY        the fog's colour and density (0: no fog)
 //   light N X Y Z            move light N (from 1)
 //   intensity N R G B        set light N's intensity
 //   orbit YAW PITCH          degrees;  pan DX DY (pixels);  zoom FACTOR;  reset
@@ -48,6 +49,7 @@ enum class ScriptOp {
   Jitter,
   NoAa,
   Ambient,
+  Fog,
   Light,
   Intensity,
   Orbit,

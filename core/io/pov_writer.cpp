@@ -339,6 +339,15 @@ private:
     out_ << material(b.material) << "\n}\n";
   }
 
+  // A closed mesh operand of CSG: POV-Ray's mesh, with an inside_vector so
+  // POV-Ray treats it as a solid (it counts crossings along that direction).
+  void one(const SolidMesh& m) {
+    out_ << "mesh {\n";
+    for (const Triangle& t : trianglesOf(m, scene_.arrays()))
+      triangle(t);
+    out_ << "  inside_vector <0, 0, 1> " << material(m.material) << "\n}\n";
+  }
+
   // Triangles as POV-Ray meshes: one per run of triangles of one material
   // (a mesh has one material), which POV-Ray stores and bounds more cheaply
   // than as many separate objects.

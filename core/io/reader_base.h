@@ -92,6 +92,8 @@ protected:
   }
   // An error in an argument of `c`: "NAME: message"; `c` is not applied.
   void invalid(Command& c, const Token& at, const std::string& message);
+  // The errors recorded so far (a block can tell whether any fell inside it).
+  std::size_t diagnosticCount() const { return diagnostics_.size(); }
   // After a missing or malformed argument: drops the offending token unless
   // it starts the next command, then the numbers that belonged to the broken
   // command.

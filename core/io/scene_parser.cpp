@@ -10,6 +10,7 @@
 
 #include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
+#include "core/io/shape_text/shape_text.h"
 #include "core/math/model_range.h"
 #include "core/math/transform.h"
 #include "core/scene/scene_builder.h"
@@ -18,6 +19,7 @@
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/disc.h"
+#include "core/shapes/mesh_closure.h"
 #include "core/shapes/quadric_surface.h"
 #include "core/shapes/shape_kinds.h"
 #include "core/shapes/torus.h"
@@ -99,7 +101,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 33> kKeywords;
+  static const std::array<Keyword, 34> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -113,12 +115,30 @@ private:
 
   // What `push` saves and `pop` restores, besides the group and material
   // the builder saves.
-  // A `csg` block saves them too (its operation says so), and `end`
-  // restores them.
+  // A `csg` or `mesh` block saves them too (its operation or flag says so),
+  // and `end` restores them.
   struct Saved {
     Transform transform;
     Location pushedAt;
-    std::optional<CsgOp> csg; // a csg block rather than a push
+    std::optional<CsgOp> csg;     // a csg block rather than a push
+    bool mesh = false;            // a mesh block rather than a push
+    bool inMesh = false;          // a push inside a mesh block: the builder has no group for it
+    std::size_t errorsBefore = 0; // diagnosticCount() at a csg block's start
+  };
+
+  // An open `mesh` block: its triangles, placed, kept until `end` checks that
+  // they bound a solid.
+  struct MeshFace {
+    std::array<Vec3, 3> v;
+    std::optional<std::array<Vec3, 3>> normals;
+    Location at; // where errors about the triangle point
+    Origin origin;
+  };
+  struct OpenMesh {
+    Location at;
+    Origin origin;
+    std::size_t errorsBefore = 0; // diagnosticCount() at `mesh`
+    std::vector<MeshFace> faces;
   };
 
   void parseFile(std::string_view text, const std::string& name, const fs::path& identity,
@@ -180,6 +200,12 @@ private:
   void end(Command& c);
   // An open shape inside a csg block: reported, its numbers skipped.
   bool openInCsg(Command& c);
+  // Mesh blocks: `mesh` ... `end`, triangles that bound a solid.
+  void mesh(Command& c);
+  void endMesh();
+  // A command other than triangles, transforms and include inside a mesh
+  // block: reported, its numbers skipped.
+  bool notInMesh(const Token& keyword);
   // The innermost push or csg block open in this file, or null.
   const Saved* innermostInFile() const {
     return saved_.size() > files_.back()->savedAtEntry ? &saved_.back() : nullptr;
@@ -223,9 +249,10 @@ private:
   bool cameraBroken_ = false;             // an eye/lookat/up was rejected: skip the camera checks
   std::vector<Vec3> vertices_;            // scratch for polygon
   std::vector<BlobComponent> components_; // scratch for blob
+  std::optional<OpenMesh> mesh_;          // the open mesh block, if any
 };
 
-const std::array<Parser::Keyword, 33> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 34> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -255,6 +282,7 @@ const std::array<Parser::Keyword, 33> Parser::kKeywords = {{
     {"pop", &Parser::pop},
     {"csg", &Parser::csg},
     {"end", &Parser::end},
+    {"mesh", &Parser::mesh},
     {"translate", &Parser::translate},
     {"scale", &Parser::scale},
     {"rotate", &Parser::rotate},
@@ -294,6 +322,7 @@ void Parser::parseFile(std::string_view text, const std::string& name, const fs:
 void Parser::command() {
   const Token token = file().lexer.next();
   if (const Handler handler = handlerFor(token.text)) {
+    if (notInMesh(token)) return;
     Command c{token, std::string(token.text)};
     (this->*handler)(c);
     return;
@@ -320,14 +349,17 @@ void Parser::closeOpenPushes() {
   const std::size_t base = file().savedAtEntry;
   if (saved_.size() == base) return;
   for (std::size_t i = base; i < saved_.size(); ++i) {
-    report(saved_[i].pushedAt,
-           saved_[i].csg ? "csg without matching end" : "push without matching pop");
+    report(saved_[i].pushedAt, saved_[i].csg    ? "csg without matching end"
+                               : saved_[i].mesh ? "mesh without matching end"
+                                                : "push without matching pop");
   }
   setTransform(saved_[base].transform);
   while (saved_.size() > base) {
     if (saved_.back().csg)
       build_.endCsg();
-    else
+    else if (saved_.back().mesh)
+      mesh_.reset(); // reported: its triangles are dropped
+    else if (!saved_.back().inMesh)
       build_.pop();
     saved_.pop_back();
   }
@@ -670,6 +702,7 @@ void Parser::disc(Command& c) {
 }
 
 void Parser::quadric(Command& c) {
+  if (openInCsg(c)) return; // an open surface (its clip box's faces are not part of it)
   static constexpr const char* kNames[] = {"A", "B", "C",  "D",  "E",  "F",  "G",  "H",
                                            "I", "J", "X0", "Y0", "Z0", "X1", "Y1", "Z1"};
   Arg a[16];
@@ -785,7 +818,7 @@ void Parser::blob(Command& c) {
 }
 
 void Parser::triangle(Command& c) {
-  if (openInCsg(c)) return;
+  if (!mesh_ && openInCsg(c)) return;
   static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "X2", "Y2", "Z2", "X3", "Y3", "Z3"};
   Arg a[9];
   if (!numbers(c, kNames, a) || !c.valid) return;
@@ -793,7 +826,7 @@ void Parser::triangle(Command& c) {
 }
 
 void Parser::ptriangle(Command& c) {
-  if (openInCsg(c)) return;
+  if (!mesh_ && openInCsg(c)) return;
   static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "NX1", "NY1", "NZ1",
                                            "X2", "Y2", "Z2", "NX2", "NY2", "NZ2",
                                            "X3", "Y3", "Z3", "NX3", "NY3", "NZ3"};
@@ -844,6 +877,13 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
     error(c.keyword, c.name + ": " + *problem);
     return;
   }
+  if (mesh_) {
+    std::optional<std::array<Vec3, 3>> kept;
+    if (normals != nullptr) kept = n;
+    mesh_->faces.push_back(
+        {v, kept, Location{file().name, c.keyword.line, c.keyword.column}, origin(c)});
+    return;
+  }
   build_.triangle(v, normals != nullptr ? &n : nullptr, build_.currentMaterial(), origin(c));
 }
 
@@ -856,14 +896,17 @@ void Parser::push(Command& c) {
     error(c.keyword, "push: groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
     throw StopReading{};
   }
-  saved_.push_back(
-      {transform_, Location{file().name, c.keyword.line, c.keyword.column}, std::nullopt});
-  build_.push(origin(c));
+  const bool inMesh = mesh_.has_value();
+  saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column},
+                    std::nullopt, false, inMesh});
+  // In a mesh block a push scopes the transform only: no group, no material.
+  if (!inMesh) build_.push(origin(c));
 }
 
 void Parser::pop(Command& c) {
-  if (const Saved* open = innermostInFile(); open != nullptr && open->csg) {
-    error(c.keyword, "pop without matching push (a csg block is open: close it with 'end' first)");
+  if (const Saved* open = innermostInFile(); open != nullptr && (open->csg || open->mesh)) {
+    error(c.keyword, std::string("pop without matching push (a ") + (open->csg ? "csg" : "mesh") +
+                         " block is open: close it with 'end' first)");
     return;
   }
   if (saved_.size() == file().savedAtEntry) {
@@ -873,17 +916,93 @@ void Parser::pop(Command& c) {
     return;
   }
   setTransform(saved_.back().transform);
+  if (!saved_.back().inMesh) build_.pop();
   saved_.pop_back();
-  build_.pop();
 }
 
 bool Parser::openInCsg(Command& c) {
   if (!build_.inCsg()) return false;
   error(c.keyword, c.name +
                        ": not a closed solid, so it cannot be an operand of csg (spheres, boxes, "
-                       "cylinders, capped cones, tori and csg blocks can)");
+                       "cylinders, capped cones, tori, blobs, meshes and csg blocks can)");
   skipNumbers();
   return true;
+}
+
+bool Parser::notInMesh(const Token& keyword) {
+  if (!mesh_) return false;
+  static constexpr std::string_view kAllowed[] = {
+      "triangle", "ptriangle", "push", "pop", "translate", "scale", "rotate", "include", "end"};
+  if (std::find(std::begin(kAllowed), std::end(kAllowed), keyword.text) != std::end(kAllowed))
+    return false;
+  error(keyword, std::string(keyword.text) +
+                     ": not allowed inside a mesh block (it holds triangle, ptriangle, push, "
+                     "pop, translate, scale, rotate and include)");
+  skipNumbers();
+  return true;
+}
+
+void Parser::mesh(Command& c) {
+  saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column},
+                    std::nullopt, true, false});
+  mesh_ = OpenMesh{saved_.back().pushedAt, origin(c), diagnosticCount(), {}};
+}
+
+// The mesh's triangles must bound a solid (mesh_closure.h): then, wound
+// outward, they are the open csg block's next operand, or outside csg plain
+// triangles. A mesh with an error inside is dropped (its errors say why).
+void Parser::endMesh() {
+  const OpenMesh open = std::move(*mesh_);
+  mesh_.reset();
+  if (diagnosticCount() != open.errorsBefore) return;
+  if (open.faces.empty()) {
+    report(open.at, "mesh: has no triangles");
+    return;
+  }
+  std::vector<std::array<Vec3, 3>> corners;
+  corners.reserve(open.faces.size());
+  for (const MeshFace& f : open.faces)
+    corners.push_back(f.v);
+  WeldedMesh welded = weld(corners);
+  if (const std::optional<ClosureProblem> p = closureProblem(welded)) {
+    const std::string edge = "the edge from (" + sc::vec(p->from) + ") to (" + sc::vec(p->to) + ")";
+    report(open.faces[p->triangle].at,
+           p->kind == ClosureProblem::Kind::Open
+               ? "mesh: not closed: " + edge + " of this triangle is in no other triangle"
+               : "mesh: not consistently oriented: this triangle runs " + edge +
+                     " the same way as the triangle at " + open.faces[p->other].at.text() +
+                     " (triangles sharing an edge must run it in opposite directions, and no "
+                     "more than two may share it)");
+    return;
+  }
+  const double volume = signedVolume6(welded);
+  if (!(volume != 0.0)) {
+    report(open.at, "mesh: encloses no volume");
+    return;
+  }
+  // Wound inward: every triangle turned over, so the right-hand normals
+  // point out (vertex normals are kept as given).
+  const bool flip = volume < 0.0;
+  std::vector<std::optional<std::array<Vec3, 3>>> normals;
+  normals.reserve(open.faces.size());
+  for (std::size_t i = 0; i < open.faces.size(); ++i) {
+    std::optional<std::array<Vec3, 3>> n = open.faces[i].normals;
+    if (flip) {
+      std::swap(welded.triangles[i][1], welded.triangles[i][2]);
+      if (n) std::swap((*n)[1], (*n)[2]);
+    }
+    normals.push_back(n);
+  }
+  const std::uint32_t material = build_.currentMaterial();
+  if (build_.inCsg()) {
+    build_.solidMesh({welded.vertices, welded.triangles, normals, material, open.origin});
+    return;
+  }
+  for (std::size_t i = 0; i < open.faces.size(); ++i) {
+    const auto& t = welded.triangles[i];
+    build_.triangle({welded.vertices[t[0]], welded.vertices[t[1]], welded.vertices[t[2]]},
+                    normals[i] ? &*normals[i] : nullptr, material, open.faces[i].origin);
+  }
 }
 
 void Parser::csg(Command& c) {
@@ -908,30 +1027,39 @@ void Parser::csg(Command& c) {
     throw StopReading{};
   }
   const CsgOp operation = op.value_or(CsgOp::Union);
-  saved_.push_back(
-      {transform_, Location{file().name, c.keyword.line, c.keyword.column}, operation});
+  saved_.push_back({transform_, Location{file().name, c.keyword.line, c.keyword.column}, operation,
+                    false, false, diagnosticCount()});
   build_.beginCsg(operation, origin(c));
 }
 
 void Parser::end(Command& c) {
   const Saved* open = innermostInFile();
   if (open == nullptr) {
-    error(c.keyword, saved_.empty() || !saved_.back().csg
-                         ? "end without matching csg"
-                         : "end without matching csg in this file (csg and end must balance "
-                           "within each file)");
+    error(c.keyword, saved_.empty() || !(saved_.back().csg || saved_.back().mesh)
+                         ? "end without matching csg or mesh"
+                         : "end without matching csg or mesh in this file (blocks and their end "
+                           "must balance within each file)");
+    return;
+  }
+  if (open->mesh) {
+    setTransform(open->transform);
+    saved_.pop_back();
+    endMesh();
     return;
   }
   if (!open->csg) {
-    error(c.keyword, "end without matching csg (a push is open: close it with 'pop' first)");
+    error(c.keyword,
+          "end without matching csg or mesh (a push is open: close it with 'pop' first)");
     return;
   }
   const Location at = open->pushedAt;
   const CsgOp op = *open->csg;
+  // An operand dropped for an error of its own is reported already.
+  const bool operandsBroken = diagnosticCount() != open->errorsBefore;
   setTransform(open->transform);
   saved_.pop_back();
   const std::size_t count = build_.endCsg();
-  if (count < 2) {
+  if (count < 2 && !operandsBroken) {
     report(at, std::string("csg ") + csgOpName(op) + ": needs at least two operands, found " +
                    std::to_string(count));
   }

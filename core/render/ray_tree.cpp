@@ -15,6 +15,25 @@ std::string fmt(const Vec3& v) {
   return s.str();
 }
 
+// ", operand sphere (csg.sc:73)": the leaf of a CSG node the ray met, found
+// again here (only the ray tree asks, so tracing never pays for it); "" for
+// other kinds.
+std::string operandOf(const RayTreeNode& node, const Scene& scene) {
+  const PrimitiveRef ref = node.where.primitive;
+  if (ref.kind != kindOf<Csg>) return "";
+  const CsgOperand* leaf =
+      operandAlong(scene.shapes<Csg>()[ref.index], scene.arrays(), node.ray, node.where.t);
+  if (leaf == nullptr) return "";
+  return std::visit(
+      [&](const auto& shape) -> std::string {
+        if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, CsgNodeIndex>)
+          return ""; // never: nested nodes are not leaves
+        else
+          return std::string(", operand ") + shape.kName + scene.placeOf(shape.origin);
+      },
+      leaf->shape);
+}
+
 // The line saying what the segment's fog or absorbing solid did.
 void printMedium(std::ostream& out, const std::string& pad, const RayTreeNode& node,
                  const Scene& scene) {
@@ -45,8 +64,8 @@ void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, i
     printMedium(out, pad, node, scene);
     return;
   }
-  out << pad << "  hits " << scene.describe(node.where.primitive) << " at t = " << node.where.t
-      << ", point " << fmt(node.point) << "\n";
+  out << pad << "  hits " << scene.describe(node.where.primitive) << operandOf(node, scene)
+      << " at t = " << node.where.t << ", point " << fmt(node.point) << "\n";
   out << pad << "  outward normal " << fmt(node.normal) << ", "
       << (node.leaving ? "leaving (N.D > 0)" : "entering (N.D <= 0)") << ", shading normal "
       << fmt(node.shadingNormal) << "\n";

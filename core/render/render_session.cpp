@@ -119,7 +119,7 @@ void RenderSession::apply(const SessionEdit& edit) {
   // nothing else changes.
   const RenderSettings& old = settings_;
   const bool onlyPass2 =
-      !edit.camera && !edit.ambient && edit.lights.empty() &&
+      !edit.camera && !edit.ambient && !edit.fog && edit.lights.empty() &&
       (!edit.settings ||
        (old.width == edit.settings->width && old.height == edit.settings->height &&
         old.maxDepth == edit.settings->maxDepth && old.tileSize == edit.settings->tileSize &&
@@ -133,6 +133,7 @@ void RenderSession::apply(const SessionEdit& edit) {
   if (edit.settings) settings_ = *edit.settings;
   if (edit.camera) scene_->camera = *edit.camera;
   if (edit.ambient) scene_->ambient = *edit.ambient;
+  if (edit.fog) scene_->fog = *edit.fog;
   for (const auto& [index, light] : edit.lights)
     scene_->lights[index] = light;
   ++restarts_;

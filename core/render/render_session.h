@@ -74,14 +74,17 @@ struct SessionImage {
 // at once with one restart (an undo that puts back a camera and two lights, a
 // reload re-applying the user's edits). Unset members stay as they are; the
 // initialisers let a designated initialiser name only what changes:
-// apply({.ambient = Color(0.1)}). Later values (fog, textures) become members.
+// apply({.ambient = Color(0.1)}). Later values (textures) become members.
 struct SessionEdit {
   std::optional<RenderSettings> settings{};
   std::optional<CameraSpec> camera{};
   std::optional<Color> ambient{};
+  // Density 0 is no fog: the picture is then the fog-free one, bit for bit
+  // (each render generation's tracers decide from the scene whether to fog).
+  std::optional<Fog> fog{};
   std::vector<std::pair<std::size_t, Light>> lights{}; // 0-based index, new value
 
-  bool empty() const { return !settings && !camera && !ambient && lights.empty(); }
+  bool empty() const { return !settings && !camera && !ambient && !fog && lights.empty(); }
 };
 
 class RenderSession {

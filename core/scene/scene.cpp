@@ -46,12 +46,14 @@ std::string Scene::kindCounts() const {
 
 std::string Scene::describe(PrimitiveRef ref) const {
   std::ostringstream text;
-  text << kindName(ref.kind) << " #" << ref.index;
-  const Origin o = origin(ref);
-  if (o.file < files.size())
-    text << " (" << std::filesystem::path(files[o.file]).filename().string() << ":" << o.line
-         << ")";
+  text << kindName(ref.kind) << " #" << ref.index << placeOf(origin(ref));
   return text.str();
+}
+
+std::string Scene::placeOf(Origin o) const {
+  if (o.file >= files.size()) return "";
+  return " (" + std::filesystem::path(files[o.file]).filename().string() + ":" +
+         std::to_string(o.line) + ")";
 }
 
 std::vector<PrimitiveRef> Scene::allPrimitives() const {

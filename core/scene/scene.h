@@ -54,6 +54,11 @@ struct Scene {
   std::vector<CsgOperand> csgOperands;
   std::vector<Csg> csgNodes;
   std::vector<BlobComponent> blobComponents; // of the blobs (Blob::firstComponent)
+  // The triangles of the closed meshes that are CSG operands and their trees
+  // (solid_mesh.h); the vertices and normals are in meshVertices/meshNormals.
+  std::vector<Triangle> meshTriangles;
+  std::vector<MeshTreeNode> meshTreeNodes;
+  std::vector<std::uint32_t> meshTreeOrder; // parallel to meshTriangles
   std::vector<Group> groups{Group{}};
   std::vector<std::string> files; // files[0] is the main scene file
 
@@ -68,8 +73,8 @@ struct Scene {
   }
   // The arrays shapes index into, as the shape functions take them.
   ShapeArrays arrays() const {
-    return {polygonVertices, polygonEdgeIndices, meshVertices,  meshNormals,
-            csgOperands,     csgNodes,           blobComponents};
+    return {polygonVertices, polygonEdgeIndices, meshVertices,  meshNormals,   csgOperands,
+            csgNodes,        blobComponents,     meshTriangles, meshTreeNodes, meshTreeOrder};
   }
 
   // Calls f with the shape `ref` names, as its own type: the one place that
@@ -102,6 +107,8 @@ struct Scene {
   }
   // "sphere #3 (table.sc:12)" and the like, for diagnostics and the ray tree.
   std::string describe(PrimitiveRef ref) const;
+  // " (table.sc:12)", or "" for a shape read from no file.
+  std::string placeOf(Origin origin) const;
   // The count of every kind the scene has, "2 spheres, 1 cone" ("" if none),
   // for summaries.
   std::string kindCounts() const;

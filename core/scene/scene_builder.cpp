@@ -1,5 +1,7 @@
 #include "core/scene/scene_builder.h"
 
+#include <algorithm>
+
 namespace prism {
 
 std::uint32_t SceneBuilder::addGroup(std::uint32_t parent, Origin origin) {
@@ -48,6 +50,10 @@ PrimitiveRef SceneBuilder::blob(const PlacedBlob& placed) {
   b.componentCount = std::uint32_t(placed.components.size());
   scene_.blobComponents.insert(scene_.blobComponents.end(), placed.components.begin(),
                                placed.components.end());
+  if (!csgOpen_.empty()) {
+    csgOpen_.back().operands.push_back(CsgOperand{b});
+    return {kindOf<Csg>, kNoPrimitive};
+  }
   scene_.shapes<Blob>().push_back(b);
   return inGroup({kindOf<Blob>, std::uint32_t(scene_.shapes<Blob>().size() - 1)});
 }
@@ -93,6 +99,40 @@ std::optional<PrimitiveRef> SceneBuilder::meshTriangle(std::array<std::uint32_t,
   t.origin = origin;
   scene_.shapes<Triangle>().push_back(t);
   return inGroup({kindOf<Triangle>, std::uint32_t(scene_.shapes<Triangle>().size() - 1)});
+}
+
+void SceneBuilder::solidMesh(const ClosedMesh& mesh) {
+  const auto base = std::uint32_t(scene_.meshVertices.size());
+  scene_.meshVertices.insert(scene_.meshVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+  std::vector<Triangle> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    Triangle t;
+    for (std::size_t k = 0; k < 3; ++k) {
+      t.vertex[k] = base + mesh.triangles[i][k];
+      if (mesh.normals[i]) {
+        t.normal[k] = std::uint32_t(scene_.meshNormals.size());
+        scene_.meshNormals.push_back((*mesh.normals[i])[k]);
+      }
+    }
+    t.material = mesh.material;
+    t.origin = mesh.origin;
+    triangles.push_back(t);
+  }
+  SolidMesh m;
+  m.firstNode = std::uint32_t(scene_.meshTreeNodes.size());
+  buildMeshTree(triangles, scene_.meshVertices.data(), scene_.meshTreeNodes, scene_.meshTreeOrder);
+  m.nodeCount = std::uint32_t(scene_.meshTreeNodes.size()) - m.firstNode;
+  m.firstTriangle = std::uint32_t(scene_.meshTriangles.size());
+  m.triangleCount = std::uint32_t(triangles.size());
+  scene_.meshTriangles.insert(scene_.meshTriangles.end(), triangles.begin(), triangles.end());
+  for (const Vec3& v : mesh.vertices) {
+    m.bounds.extend(v);
+    m.roundoff = std::max(m.roundoff, maxAbsComponent(v));
+  }
+  m.material = mesh.material;
+  m.origin = mesh.origin;
+  csgOpen_.back().operands.push_back(CsgOperand{m});
 }
 
 std::uint32_t SceneBuilder::addFile(std::string name) {

@@ -101,7 +101,8 @@ public:
   PrimitiveRef polygon(std::span<const Vec3> vertices, std::uint32_t material, Origin origin);
 
   // A blob made by makeBlob, with its material and origin already set: its
-  // components go to the scene's array.
+  // components go to the scene's array. Inside a CSG node it becomes the
+  // node's next operand, as the closed kinds of add do.
   PrimitiveRef blob(const PlacedBlob& placed);
 
   // A triangle with vertices of its own (and, when `normals` is given, unit
@@ -133,6 +134,20 @@ public:
   // around it. Returns the count of its operands; with fewer than two the
   // node is dropped (the reader reports it).
   std::size_t endCsg();
+
+  // A closed mesh, checked and wound outward by the reader (mesh_closure.h),
+  // as the open node's next operand: its vertices (and the unit vertex
+  // normals of its smooth triangles) go to the scene's mesh arrays, its
+  // triangles and their tree (mesh_tree.h) to the closed meshes' arrays.
+  // Requires inCsg().
+  struct ClosedMesh {
+    std::span<const Vec3> vertices;
+    std::span<const std::array<std::uint32_t, 3>> triangles;     // into vertices
+    std::span<const std::optional<std::array<Vec3, 3>>> normals; // per triangle, or none
+    std::uint32_t material = 0;
+    Origin origin;
+  };
+  void solidMesh(const ClosedMesh& mesh);
 
   // --- Lights and files
 

@@ -148,13 +148,29 @@ void walkCrossings(const Csg& node, const ShapeArrays& arrays, const Ray& ray, W
   }
 }
 
-// The record of a leaf at `point`, turned inside out where it is subtracted.
+// A leaf's record (and coordinates, when asked) at `point`. Only a mesh needs
+// the crossing's part, its triangle, when known: every other kind finds its
+// face from the point.
+template <class K>
+SurfacePoint recordAt(const K& shape, const ShapeArrays& arrays, const Vec3& point,
+                      const std::uint32_t*, SurfaceDetail detail) {
+  SurfacePoint r = surfaceAt(shape, arrays, point);
+  if (detail == SurfaceDetail::WithCoordinates) r.uv = uvAt(shape, arrays, point);
+  return r;
+}
+SurfacePoint recordAt(const SolidMesh& m, const ShapeArrays& arrays, const Vec3& point,
+                      const std::uint32_t* part, SurfaceDetail detail) {
+  return surfaceAt(m, arrays, point, part != nullptr ? *part : nearestTriangle(m, arrays, point),
+                   detail);
+}
+
+// The record of a leaf at `point` (on its face `part`, if known), turned
+// inside out where it is subtracted.
 SurfacePoint leafSurface(const Leaf& leaf, const ShapeArrays& arrays, const Vec3& point,
-                         SurfaceDetail detail) {
+                         SurfaceDetail detail, const std::uint32_t* part = nullptr) {
   SurfacePoint s = visitLeaf(leaf, [&](const auto& shape) {
-    SurfacePoint r = surfaceAt(shape, arrays, point);
+    SurfacePoint r = recordAt(shape, arrays, point, part, detail);
     r.material = shape.material;
-    if (detail == SurfaceDetail::WithCoordinates) r.uv = uvAt(shape, arrays, point);
     return r;
   });
   if (leaf.flipped) {
@@ -205,7 +221,7 @@ void finishCsg(Csg& node, const ShapeArrays& arrays) {
             box = nested.bounds;
             roundoff = std::max(roundoff, nested.roundoff);
           } else {
-            box = boundsOf(shape);
+            box = boundsOf(shape, arrays);
             roundoff = std::max(roundoff, roundoffScale(shape, arrays));
           }
         },
@@ -252,26 +268,48 @@ void appendCrossings(const Csg& node, const ShapeArrays& arrays, const Ray& ray,
   });
 }
 
-SurfacePoint surfaceAlong(const Csg& node, const ShapeArrays& arrays, const Ray& ray, double t,
-                          SurfaceDetail detail) {
-  Walk& w = scratch();
-  std::size_t nearestLeaf = 0;
+namespace {
+
+// The crossing of the node's surface nearest `t` along `ray`: its leaf (in
+// w.leaves) and part.
+struct Along {
+  std::size_t leaf = 0;
+  std::uint32_t part = 0;
+};
+Along crossingAlong(const Csg& node, const ShapeArrays& arrays, const Ray& ray, double t, Walk& w) {
+  Along found;
   double nearest = std::numeric_limits<double>::infinity();
   walkCrossings(node, arrays, ray, w, [&](const LeafCrossing& c, bool) {
     const double distance = std::abs(c.t - t);
     if (distance < nearest) {
       nearest = distance;
-      nearestLeaf = c.leaf;
+      found = {c.leaf, c.part};
     }
     return c.t >= t;
   });
+  return found;
+}
+
+} // namespace
+
+SurfacePoint surfaceAlong(const Csg& node, const ShapeArrays& arrays, const Ray& ray, double t,
+                          SurfaceDetail detail) {
+  Walk& w = scratch();
+  const Along along = crossingAlong(node, arrays, ray, t, w);
   const Vec3 point = ray.at(t);
   if (w.leaves.empty()) {
     SurfacePoint none;
     none.point = point;
     return none;
   }
-  return leafSurface(w.leaves[nearestLeaf], arrays, point, detail);
+  return leafSurface(w.leaves[along.leaf], arrays, point, detail, &along.part);
+}
+
+const CsgOperand* operandAlong(const Csg& node, const ShapeArrays& arrays, const Ray& ray,
+                               double t) {
+  Walk& w = scratch();
+  const Along along = crossingAlong(node, arrays, ray, t, w);
+  return w.leaves.empty() ? nullptr : w.leaves[along.leaf].operand;
 }
 
 SurfacePoint surfaceAt(const Csg& node, const ShapeArrays& arrays, const Vec3& point) {

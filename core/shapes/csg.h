@@ -1,6 +1,7 @@
 // Constructive solid geometry: the union, intersection or difference of
 // closed solids (spheres, ellipsoids, tori, boxes, capped cones and
-// cylinders) and of other CSG nodes, nested to any depth.
+// cylinders, blobs, closed triangle meshes) and of other CSG nodes, nested to
+// any depth.
 //
 // Storage. A node names a run of operands in ShapeArrays::csgOperands; an
 // operand is a closed shape of its own (with its own material and origin)
@@ -31,12 +32,14 @@
 #include "core/math/aabb.h"
 #include "core/math/interval.h"
 #include "core/math/ray.h"
+#include "core/shapes/blob.h"
 #include "core/shapes/box.h"
 #include "core/shapes/capped_cone.h"
 #include "core/shapes/crossings.h"
 #include "core/shapes/ellipsoid.h"
 #include "core/shapes/primitives.h"
 #include "core/shapes/shape_arrays.h"
+#include "core/shapes/solid_mesh.h"
 #include "core/shapes/sphere.h"
 #include "core/shapes/surface_point.h"
 #include "core/shapes/torus.h"
@@ -72,7 +75,7 @@ struct CsgNodeIndex {
 };
 
 struct CsgOperand {
-  std::variant<Sphere, Ellipsoid, Torus, Box, CappedCone, CsgNodeIndex> shape;
+  std::variant<Sphere, Ellipsoid, Torus, Box, CappedCone, Blob, SolidMesh, CsgNodeIndex> shape;
 };
 
 // The operands of `node`.
@@ -96,6 +99,12 @@ inline double roundoffScale(const Csg& node, const ShapeArrays&) { return node.r
 // its part, its material and the normal's turn are exact. The tracer's way in.
 SurfacePoint surfaceAlong(const Csg& node, const ShapeArrays& arrays, const Ray& ray, double t,
                           SurfaceDetail detail);
+
+// The leaf (never a nested node) whose surface `ray` meets the node on at
+// `t`: the one surfaceAlong takes the record of. For the --pixel ray tree,
+// which names it; null if the ray meets no leaf.
+const CsgOperand* operandAlong(const Csg& node, const ShapeArrays& arrays, const Ray& ray,
+                               double t);
 
 // From a point alone (no ray): the leaf whose surface passes nearest the
 // point, found by a short probe along each leaf's normal there. Exact away

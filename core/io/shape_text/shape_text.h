@@ -51,5 +51,6 @@ void write(TextOut& text, const Box& b, int depth);
 void write(TextOut& text, const Disc& d, int depth);
 void write(TextOut& text, const Quadric& q, int depth);
 void write(TextOut& text, const Blob& b, int depth);
+void write(TextOut& text, const SolidMesh& m, int depth); // a CSG operand's `mesh` block
 
 } // namespace prism::sc

@@ -292,6 +292,38 @@ pop
   EXPECT_FALSE(materialOf(scene, 1).texture.fromWorld); // never in a scene's materials
 }
 
+// A mesh block is one primitive for its texture: object space is the
+// transform at `mesh` (a push inside scopes only its triangles' placement),
+// as a CSG operand too.
+TEST(Texture, AMeshIsTexturedInTheSpaceOfItsBlock) {
+  const std::string tetrahedron = R"(
+  mesh
+    push
+      scale 2 2 2
+      triangle 0 0 0  0 1 0  1 0 0
+      triangle 0 0 0  1 0 0  0 0 1
+      triangle 0 0 0  0 0 1  0 1 0
+      triangle 1 0 0  0 1 0  0 0 1
+    pop
+  end
+)";
+  const std::string head = "texture gradient 1  0 0 0  1 0 0  1\npush\n  translate 10.5 0 0\n";
+  const Scene plain = parseScene(head + tetrahedron + "pop\n", "m.sc");
+  ASSERT_EQ(plain.shapes<Triangle>().size(), 4u);
+  for (const Triangle& t : plain.shapes<Triangle>()) {
+    TextureLookup lookup;
+    textureAt(plain.materials[t.material], {10.75, 0.5, 0.5}, &lookup);
+    EXPECT_EQ(lookup.value, 0.25); // object x 0.25, not world 10.75 or 0.125
+  }
+  const Scene operand =
+      parseScene(head + "csg union\n" + tetrahedron + "  sphere 0 0 0 0.5\nend\npop\n", "c.sc");
+  for (const Material& m : operand.materials) {
+    TextureLookup lookup;
+    textureAt(m, {10.75, 0.5, 0.5}, &lookup);
+    EXPECT_EQ(lookup.value, 0.25);
+  }
+}
+
 Color traced(const Scene& scene, const Vec3& origin, const Vec3& dir,
              RayTreeNode* record = nullptr) {
   const auto accel = makeAccel(scene, AccelKind::Bvh);

@@ -3,6 +3,7 @@
 #include "core/io/pending_file.h"
 #include "core/io/pov_mapping.h"
 #include "core/io/shape_text/shape_text.h"
+#include "core/scene/material_blend.h"
 
 #include <cmath>
 #include <sstream>
@@ -106,13 +107,11 @@ public:
       if (!m.exact)
         out_ << "// " << materialName(std::uint32_t(i))
              << " transmits everything: POV-Ray shows no diffuse light on it\n";
-      out_ << "#declare " << materialName(std::uint32_t(i)) << " = material {\n  texture {\n"
-           << "    pigment { rgbt <" << num(m.color.r) << ", " << num(m.color.g) << ", "
-           << num(m.color.b) << ", " << num(m.transmit) << "> }\n"
-           << "    finish { ambient " << num(m.ambient) << " diffuse " << num(m.diffuse)
-           << " specular " << num(m.specular);
-      if (m.specular > 0.0) out_ << " roughness " << num(m.roughness);
-      out_ << " reflection { " << num(m.reflection) << " } }\n  }\n";
+      out_ << "#declare " << materialName(std::uint32_t(i)) << " = material {\n";
+      if (scene_.materials[i].texture.active())
+        patterned(scene_.materials[i]);
+      else
+        out_ << "  texture {\n" << surface(m, "    ") << "  }\n";
       if (m.transmit > 0.0) {
         out_ << "  interior { ior " << num(m.ior);
         if (m.fadeDistance > 0.0)
@@ -122,6 +121,76 @@ public:
       }
       out_ << "}\n";
     }
+  }
+
+  // A material's pigment and finish, each line indented by `pad`.
+  static std::string surface(const PovMaterial& m, const std::string& pad) {
+    std::ostringstream out;
+    out << pad << "pigment { rgbt <" << num(m.color.r) << ", " << num(m.color.g) << ", "
+        << num(m.color.b) << ", " << num(m.transmit) << "> }\n"
+        << pad << "finish { ambient " << num(m.ambient) << " diffuse " << num(m.diffuse)
+        << " specular " << num(m.specular);
+    if (m.specular > 0.0) out << " roughness " << num(m.roughness);
+    out << " reflection { " << num(m.reflection) << " } }\n";
+    return out.str();
+  }
+
+  // A textured material as POV-Ray's pattern over the two ends' textures
+  // (docs/vs-povray.md, What differs): checker is the same pattern, stripes and
+  // gradient are POV-Ray's gradient x with a texture_map, noise, marble and
+  // wood are POV-Ray's bozo, marble and wood, which are alike, not equal.
+  void patterned(const Material& material) {
+    const Texture& t = material.texture;
+    const bool checker = t.kind == TextureKind::Checker;
+    const std::string pad = checker ? "      " : "        ";
+    const std::string low = surface(povMaterialOf(textureBlend(material, 0.0)), pad);
+    const std::string high = surface(povMaterialOf(textureBlend(material, 1.0)), pad);
+    switch (t.kind) {
+    case TextureKind::Noise:
+    case TextureKind::Marble:
+    case TextureKind::Wood:
+      out_ << "  // approximate: POV-Ray's "
+           << (t.kind == TextureKind::Noise ? std::string_view("bozo") : textureKindName(t.kind))
+           << " is not Prism's " << textureKindName(t.kind) << " pattern\n";
+      break;
+    default: break;
+    }
+    out_ << "  texture {\n";
+    if (checker) {
+      out_ << "    checker\n    texture {\n"
+           << low << "    }\n    texture {\n"
+           << high << "    }\n";
+    } else {
+      switch (t.kind) {
+      case TextureKind::Stripes: out_ << "    gradient x scale <2, 1, 1>\n"; break;
+      case TextureKind::Gradient: out_ << "    gradient x\n"; break;
+      case TextureKind::Noise: out_ << "    bozo\n"; break;
+      case TextureKind::Marble: out_ << "    marble turbulence 1\n"; break;
+      default: out_ << "    wood turbulence 0.1\n"; break;
+      }
+      // Stripes: the low end on [0, 0.5) of the doubled gradient, the high
+      // end on [0.5, 1).
+      const bool stripes = t.kind == TextureKind::Stripes;
+      out_ << "    texture_map {\n      [0 texture {\n" << low << "      }]\n";
+      if (stripes) out_ << "      [0.5 texture {\n" << low << "      }]\n";
+      if (stripes) out_ << "      [0.5 texture {\n" << high << "      }]\n";
+      out_ << "      [1 texture {\n" << high << "      }]\n    }\n";
+    }
+    // POV-Ray shows a pattern moved by `matrix` M at p as the pattern at
+    // M^-1 p; Prism's is at (linear p + offset) / scale.
+    const Mat3 linear = t.linear / t.scale;
+    const double det = glm::determinant(linear);
+    if (det != 0.0 && std::isfinite(det)) {
+      const Mat3 m = glm::inverse(linear) + Mat3(0.0); // + 0: no -0 written
+      const Vec3 offset = -(m * (t.offset / t.scale)) + Vec3(0.0);
+      out_ << "    matrix <";
+      for (int column = 0; column < 3; ++column)
+        out_ << num(m[column][0]) << ", " << num(m[column][1]) << ", " << num(m[column][2]) << ", ";
+      out_ << num(offset.x) << ", " << num(offset.y) << ", " << num(offset.z) << ">\n";
+    } else {
+      out_ << "    // approximate: the texture space is degenerate, left untransformed\n";
+    }
+    out_ << "  }\n";
   }
 
   // Every kind through one overload of `all`, so a kind added to ShapeKinds

@@ -101,7 +101,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 32> kKeywords;
+  static const std::array<Keyword, 34> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -162,6 +162,8 @@ private:
   void globalColor(Command& c, Color& target);
   void fog(Command& c);
   void absorption(Command& c);
+  void texture(Command& c);
+  void textureSpace(Command& c);
   void light(Command& c);
   void surface(Command& c);
   // Shapes.
@@ -217,6 +219,11 @@ private:
   SourceFile& file() { return *files_.back(); }
   Origin origin(const Command& c) { return {file().index, std::uint32_t(c.keyword.line)}; }
   void compose(Command& c, const Transform& t);
+  // The one way transform_ changes: textures follow it (SceneBuilder::setObjectSpace).
+  void setTransform(const Transform& t) {
+    transform_ = t;
+    build_.setObjectSpace(Mat3(t.inverse()), Vec3(t.inverse()[3]));
+  }
   std::optional<std::string> readInclude(const fs::path& path, const fs::path& identity,
                                          const std::string*& text);
   std::uint32_t fileIndex(const fs::path& identity, const std::string& name);
@@ -245,7 +252,7 @@ private:
   std::optional<OpenMesh> mesh_;          // the open mesh block, if any
 };
 
-const std::array<Parser::Keyword, 32> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 34> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -256,6 +263,8 @@ const std::array<Parser::Keyword, 32> Parser::kKeywords = {{
     {"light", &Parser::light},
     {"surface", &Parser::surface},
     {"absorption", &Parser::absorption},
+    {"texture", &Parser::texture},
+    {"texture_space", &Parser::textureSpace},
     {"fog", &Parser::fog},
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
@@ -344,7 +353,7 @@ void Parser::closeOpenPushes() {
                                : saved_[i].mesh ? "mesh without matching end"
                                                 : "push without matching pop");
   }
-  transform_ = saved_[base].transform;
+  setTransform(saved_[base].transform);
   while (saved_.size() > base) {
     if (saved_.back().csg)
       build_.endCsg();
@@ -450,6 +459,57 @@ void Parser::absorption(Command& c) {
   if (!c.valid) return;
   Material m = build_.currentMaterialValue();
   m.absorption = vec(a);
+  build_.setMaterial(m);
+}
+
+// Amends the current surface: a pattern blends its C, kdr, ksr, kst and e
+// toward the numbers given (docs/scene-language.md#textures).
+void Parser::texture(Command& c) {
+  const Token word = file().lexer.peek();
+  const std::optional<TextureKind> kind = word.atEnd() ? std::nullopt : textureKindNamed(word.text);
+  if (!kind) {
+    error(word.atEnd() ? c.keyword : word,
+          "texture: expected a kind (" + std::string(kTextureKindList) + ") but " +
+              (word.atEnd() ? std::string("reached the end of the file")
+                            : "found " + quoted(word.text)));
+    if (!word.atEnd() && !startsCommand(word.text)) file().lexer.next();
+    skipNumbers();
+    return;
+  }
+  file().lexer.next();
+  static constexpr const char* kNames[] = {"SCALE", "R", "G", "B", "KDR", "KSR", "KST", "E"};
+  Arg a[8];
+  if (!numbers(c, kNames, a)) return;
+  if (a[0].value <= 0.0)
+    invalid(c, a[0].token, "SCALE must be positive, found " + quoted(a[0].token.text));
+  for (int i = 1; i < 8; ++i)
+    requireNonNegative(c, a[i], kNames[i]);
+  if (!c.valid) return;
+  Material m = build_.currentMaterialValue();
+  m.texture =
+      Texture{*kind, a[0].value, vec(a + 1), a[4].value, a[5].value, a[6].value, a[7].value};
+  build_.setMaterial(m);
+}
+
+// Amends the current texture: its pattern is evaluated at M p, p the point in
+// world coordinates, whatever the transform (what `prism convert` writes:
+// the transform it writes a shape under is only that shape's).
+void Parser::textureSpace(Command& c) {
+  static constexpr const char* kNames[] = {"M11", "M12", "M13", "M14", "M21", "M22",
+                                           "M23", "M24", "M31", "M32", "M33", "M34"};
+  Arg a[12];
+  if (!numbers(c, kNames, a) || !c.valid) return;
+  Material m = build_.currentMaterialValue();
+  if (!m.texture.active()) {
+    error(c.keyword, "texture_space: the current surface has no texture (give 'texture' first)");
+    return;
+  }
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 3; ++column)
+      m.texture.linear[column][row] = a[4 * row + column].value; // glm: [column][row]
+    m.texture.offset[row] = a[4 * row + 3].value;
+  }
+  m.texture.fromWorld = true;
   build_.setMaterial(m);
 }
 
@@ -855,7 +915,7 @@ void Parser::pop(Command& c) {
                                       "must balance within each file)");
     return;
   }
-  transform_ = saved_.back().transform;
+  setTransform(saved_.back().transform);
   if (!saved_.back().inMesh) build_.pop();
   saved_.pop_back();
 }
@@ -982,7 +1042,7 @@ void Parser::end(Command& c) {
     return;
   }
   if (open->mesh) {
-    transform_ = open->transform;
+    setTransform(open->transform);
     saved_.pop_back();
     endMesh();
     return;
@@ -996,7 +1056,7 @@ void Parser::end(Command& c) {
   const CsgOp op = *open->csg;
   // An operand dropped for an error of its own is reported already.
   const bool operandsBroken = diagnosticCount() != open->errorsBefore;
-  transform_ = open->transform;
+  setTransform(open->transform);
   saved_.pop_back();
   const std::size_t count = build_.endCsg();
   if (count < 2 && !operandsBroken) {
@@ -1014,7 +1074,7 @@ void Parser::compose(Command& c, const Transform& t) {
           c.name + ": the current transform would become degenerate (too large or too small)");
     return;
   }
-  transform_ = next;
+  setTransform(next);
 }
 
 void Parser::translate(Command& c) {

@@ -81,7 +81,26 @@ private:
     line(depth) << "surface " << vec(m.color) << "  " << num(m.kdr) << " " << num(m.ksr) << " "
                 << num(m.kst) << "  " << num(m.e) << " " << num(m.ir) << "\n";
     if (m.absorbs()) line(depth) << "absorption " << vec(m.absorption) << "\n";
+    if (m.texture.active()) texture(m.texture, depth);
     current_ = m;
+  }
+
+  // The texture's map from the world (its primitive's object space composed
+  // in) is written whole, as `texture_space`, which the reader takes as it
+  // is: a shape may be written under a transform of its own (push,
+  // translate, ...), which must not move its texture again.
+  void texture(const Texture& t, int depth) {
+    line(depth) << "texture " << textureKindName(t.kind) << " " << num(t.scale) << "  "
+                << vec(t.color) << "  " << num(t.kdr) << " " << num(t.ksr) << " " << num(t.kst)
+                << "  " << num(t.e) << "\n";
+    std::ostream& out = line(depth) << "texture_space";
+    for (int row = 0; row < 3; ++row) {
+      out << " ";
+      for (int column = 0; column < 3; ++column)
+        out << " " << num(t.linear[column][row]);
+      out << " " << num(t.offset[row]);
+    }
+    out << "\n";
   }
 
   // Each kind's text is written by its own file (core/io/shape_text/); a

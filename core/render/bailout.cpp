@@ -1,5 +1,7 @@
 #include "core/render/bailout.h"
 
+#include "core/scene/material_blend.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -46,7 +48,10 @@ std::vector<double> radianceBounds(const Scene& scene, int maxDepth) {
   Color next(0.0); // the bound one depth further; none beyond maxDepth
   for (int k = maxDepth; k >= 1; --k) {
     Color bound = scene.background;
-    for (const Material& m : scene.materials) {
+    for (const Material& material : scene.materials) {
+      // Every coefficient at its largest over a texture's blends: the bound
+      // grows with each of them.
+      const Material m = coefficientCeiling(material);
       const Color local = m.color * m.kdr * (scene.ambient + s) + m.ksr * s;
       const double carried = m.ksr + m.kst; // both new rays' coefficients
       const Color deeper = k < maxDepth && carried > 0.0 ? carried * next : Color(0.0);
@@ -65,8 +70,12 @@ std::vector<double> radianceBounds(const Scene& scene, int maxDepth) {
 
 bool bailoutCanSkip(const Scene& scene, const std::vector<double>& beyond, double levels) {
   double smallest = std::numeric_limits<double>::infinity(); // of (ksr + kst) > 0
-  for (const Material& m : scene.materials)
-    if (m.ksr + m.kst > 0.0) smallest = std::min(smallest, m.ksr + m.kst);
+  // A texture's blends reach down to its smaller end, and approach 0 when
+  // one end carries nothing (smallest 0: a blend can always be skipped).
+  for (const Material& m : scene.materials) {
+    const Material ceiling = coefficientCeiling(m), floor = coefficientFloor(m);
+    if (ceiling.ksr + ceiling.kst > 0.0) smallest = std::min(smallest, floor.ksr + floor.kst);
+  }
   if (std::isinf(smallest)) return false; // no material starts a new ray
   const int maxDepth = int(beyond.size()) - 1;
   const double largest = levels * beyond[1] / 128.0; // the eye ray's allowance at most

@@ -72,6 +72,11 @@ void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, i
   out << pad << "  surface (u, v) = (" << node.uv.x << ", " << node.uv.y << ")";
   if (node.part != 0) out << ", part " << node.part;
   out << "\n";
+  if (node.textureKind != TextureKind::None) {
+    out << pad << "  texture " << textureKindName(node.textureKind) << " (scale "
+        << node.textureScale << ") at texture-space point " << fmt(node.texture.point) << ": value "
+        << node.texture.value << ", the material blended to it:\n";
+  }
   const Material& m = node.material;
   out << pad << "  material C " << fmt(m.color) << " kdr " << m.kdr << " ksr " << m.ksr << " kst "
       << m.kst << " e " << m.e << " ir " << m.ir << "\n";

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/accel/accel.h"
+#include "core/scene/material_blend.h"
 
 #include <iosfwd>
 #include <vector>
@@ -37,7 +38,10 @@ struct RayTreeNode {
   Vec3 shadingNormal{0.0}; // flipped to face the incoming ray
   Vec2 uv{0.0};            // the surface coordinates of the hit (SurfacePoint::uv)
   std::uint32_t part = 0;  // the face of a compound shape
-  Material material;       // as looked up at the hit (Scene::materialAt)
+  Material material;       // as looked up at the hit, a texture's blend (Scene::materialAt)
+  TextureLookup texture;   // the lookup, when the stored material had a texture
+  TextureKind textureKind = TextureKind::None;
+  double textureScale = 1.0;
   bool leaving = false;
   bool totalInternalReflection = false;
   std::vector<LightTerm> lights;

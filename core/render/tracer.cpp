@@ -1,6 +1,7 @@
 #include "core/render/tracer.h"
 
 #include "core/render/media.h"
+#include "core/scene/material_blend.h"
 
 #include <limits>
 #include <stdexcept>
@@ -33,7 +34,7 @@ constexpr double kGrazingCos2 = 1e-12;
 // Refracted direction of unit `d` through a surface with unit normal `n` facing
 // the incoming ray, for the index ratio eta = n_from / n_to; false on total
 // internal reflection.
-bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
+[[gnu::always_inline]] inline bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
   const double cosIn = -glm::dot(d, n);
   const double k = 1.0 - eta * eta * (1.0 - cosIn * cosIn); // cos^2 of the refracted angle
   // At the critical angle the refracted ray would run along the surface; k is 0
@@ -48,7 +49,7 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& out) {
 }
 
 // A new ray's node in the ray tree, when one is recorded.
-RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
+[[gnu::always_inline]] inline RayTreeNode* childOf(RayTreeNode* record, RayKind kind) {
   if (record == nullptr) return nullptr;
   RayTreeNode* child = &record->children.emplace_back();
   child->kind = kind;
@@ -200,7 +201,29 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   const SurfacePoint surface =
       scene_.surfaceAt(hit.primitive, ray, hit.t,
                        record != nullptr ? SurfaceDetail::WithCoordinates : SurfaceDetail::Shading);
+  // A textured material is blended at the point, out of line; every other
+  // one is used in place, at the cost of one well-predicted test.
   const Material& m = scene_.materialAt(surface);
+  if (m.texture.active()) [[unlikely]]
+    return shadeTextured(ray, hit, point, surface, m, depth, counts, record);
+  return shadeWith(ray, hit, point, surface, m, depth, counts, record);
+}
+
+[[gnu::noinline]] Color Tracer::shadeTextured(const Ray& ray, const Hit& hit, const Vec3& point,
+                                              const SurfacePoint& surface, const Material& stored,
+                                              int depth, RayCounts& counts, RayTreeNode* record) {
+  const Material blended = textureAt(stored, point, record != nullptr ? &record->texture : nullptr);
+  const Color radiance = shadeWith(ray, hit, point, surface, blended, depth, counts, record);
+  if (record != nullptr) {
+    record->textureKind = stored.texture.kind;
+    record->textureScale = stored.texture.scale;
+  }
+  return radiance;
+}
+
+[[gnu::always_inline]] inline Color
+Tracer::shadeWith(const Ray& ray, const Hit& hit, const Vec3& point, const SurfacePoint& surface,
+                  const Material& m, int depth, RayCounts& counts, RayTreeNode* record) {
   // Leaving iff N.D > 0; shade with the normal facing the ray.
   // Both the test and where new rays start use the geometric normal `g`.
   const bool leaving = glm::dot(surface.outward, ray.dir) > 0.0;

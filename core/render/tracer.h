@@ -69,6 +69,13 @@ private:
   // The shading formula at a hit, in its named steps: the local terms from
   // the lights, then the mirror ray, then the refracted ray.
   Color shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts, RayTreeNode* record);
+  // The rest of shade with the material `m` at the hit: the stored one, or
+  // (shadeTextured) its blend at the point.
+  Color shadeWith(const Ray& ray, const Hit& hit, const Vec3& point, const SurfacePoint& surface,
+                  const Material& m, int depth, RayCounts& counts, RayTreeNode* record);
+  Color shadeTextured(const Ray& ray, const Hit& hit, const Vec3& point,
+                      const SurfacePoint& surface, const Material& stored, int depth,
+                      RayCounts& counts, RayTreeNode* record);
   DirectLight directLighting(const Ray& ray, const Incidence& at, const Material& m, int depth,
                              RayCounts& counts, RayTreeNode* record);
   // ksr I_r, or 0 at the depth limit or for a material that is no mirror.

@@ -5,6 +5,7 @@
 #include "core/render/parallel.h"
 #include "core/render/tracer.h"
 #include "core/scene/camera.h"
+#include "core/scene/material_blend.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,8 +78,8 @@ std::pair<double, double> traceSample(const Scene& scene, const Accel& accel, co
 int bailoutDepthLimit(const Scene& scene, const BailoutBound& bound, int maxDepth) {
   if (!bound.active()) return maxDepth;
   double c = 0.0;
-  for (const Material& m : scene.materials)
-    c = std::max(c, m.ksr + m.kst);
+  for (const Material& m : scene.materials) // over a texture's blends too
+    c = std::max(c, coefficientCeiling(m).ksr + coefficientCeiling(m).kst);
   double product = 1.0; // c^j
   for (int j = 1; j < maxDepth; ++j) {
     product *= c;

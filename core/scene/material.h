@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/math/math.h"
+#include "core/texture/texture.h"
 
 namespace prism {
 
@@ -17,6 +18,9 @@ struct Material {
   // per channel (`absorption`): radiance crossing a length d of it is
   // multiplied by exp(-absorption d). Zero (the default) is clear.
   Color absorption{0.0};
+  // A procedural texture varying C, kdr, ksr, kst and e over the surface
+  // (`texture`, core/scene/material_blend.h); none by default.
+  Texture texture{};
 
   bool absorbs() const { return absorption.r > 0.0 || absorption.g > 0.0 || absorption.b > 0.0; }
 

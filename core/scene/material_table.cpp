@@ -2,6 +2,7 @@
 
 #include "core/math/hash.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace prism {
@@ -18,8 +19,20 @@ std::uint32_t MaterialTable::intern(const Material& m) {
 }
 
 MaterialTable::Key MaterialTable::keyOf(const Material& m) {
-  return {m.color.r, m.color.g, m.color.b,      m.kdr,          m.ksr,         m.kst,
+  const Texture& t = m.texture;
+  Key key{m.color.r, m.color.g, m.color.b,      m.kdr,          m.ksr,         m.kst,
           m.e,       m.ir,      m.absorption.r, m.absorption.g, m.absorption.b};
+  // Zeros for an untextured material (whose texture is the default).
+  if (!t.active()) return key;
+  const double texture[22] = {double(t.kind), t.scale,        t.color.r,
+                              t.color.g,      t.color.b,      t.kdr,
+                              t.ksr,          t.kst,          t.e,
+                              t.linear[0][0], t.linear[0][1], t.linear[0][2],
+                              t.linear[1][0], t.linear[1][1], t.linear[1][2],
+                              t.linear[2][0], t.linear[2][1], t.linear[2][2],
+                              t.offset.x,     t.offset.y,     t.offset.z};
+  std::copy(std::begin(texture), std::end(texture), key.begin() + 11);
+  return key;
 }
 
 std::size_t MaterialTable::KeyHash::operator()(const Key& key) const {

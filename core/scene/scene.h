@@ -99,10 +99,9 @@ struct Scene {
   // ray.at(t).
   SurfacePoint surfaceAt(PrimitiveRef ref, const Ray& ray, double t,
                          SurfaceDetail detail = SurfaceDetail::Shading) const;
-  // The material at a surface point: the one place shading looks it up. The
-  // values are constant per primitive today, so this is a reference into the
-  // table; textured materials will vary them with the point's coordinates
-  // here (and return a value).
+  // The material stored for a surface point: the one place shading looks it
+  // up. A textured one still has to be blended at the point (textureAt in
+  // core/scene/material_blend.h), which the tracer does.
   const Material& materialAt(const SurfacePoint& surface) const {
     return materials[surface.material];
   }

@@ -42,9 +42,22 @@ public:
     currentIndex_.reset();
   }
   const Material& currentMaterialValue() const { return current_; }
+  // The index of the current material as the primitives added next use it:
+  // a textured one with the object space composed into its texture's map.
   std::uint32_t currentMaterial() {
-    if (!currentIndex_) currentIndex_ = materials_.intern(current_);
+    if (!currentIndex_) currentIndex_ = materials_.intern(inObjectSpace(current_));
     return *currentIndex_;
+  }
+  // The world-to-object map (x -> linear x + offset) of the primitives added
+  // next: the inverse of a reader's current transform. A texture is
+  // evaluated in its primitive's object space, so it moves with the
+  // primitive; textured primitives under the same map share a material.
+  // Identity unless set; untextured materials and textures whose map is
+  // given from the world (Texture::fromWorld) ignore it.
+  void setObjectSpace(const Mat3& linear, const Vec3& offset) {
+    objectLinear_ = linear;
+    objectOffset_ = offset;
+    if (current_.texture.active()) currentIndex_.reset();
   }
 
   // --- Groups (the push/pop hierarchy)
@@ -144,6 +157,20 @@ public:
   std::uint32_t addFile(std::string name);
 
 private:
+  // `m` with the object space composed in after its texture's own map,
+  // unless that map is already from the world.
+  Material inObjectSpace(Material m) const {
+    Texture& t = m.texture;
+    if (!t.active()) return m;
+    if (t.fromWorld) {
+      t.fromWorld = false;
+      return m;
+    }
+    t.offset = t.linear * objectOffset_ + t.offset;
+    t.linear = t.linear * objectLinear_;
+    return m;
+  }
+
   PrimitiveRef inGroup(PrimitiveRef ref) {
     scene_.groups[group_].primitives.push_back(ref);
     return ref;
@@ -169,6 +196,8 @@ private:
   MaterialTable materials_;
   Material current_;
   std::optional<std::uint32_t> currentIndex_; // current_ interned, once a primitive used it
+  Mat3 objectLinear_{1.0};
+  Vec3 objectOffset_{0.0};
   std::uint32_t group_ = 0;
   std::vector<Saved> saved_;
 };

@@ -1,7 +1,8 @@
 // What the tracer learns of a surface at a hit point, beyond the distance:
 // the record every shape kind hands to shading, so the tracer needs no
 // kind-specific code, and material properties are looked up through it
-// (Scene::materialAt), which is where textures will plug in.
+// (Scene::materialAt; a textured one is then blended at the point, see
+// core/scene/material_blend.h).
 #pragma once
 
 #include "core/math/math.h"
@@ -13,8 +14,8 @@ namespace prism {
 
 // How much of the record a caller needs. The surface coordinates cost a few
 // transcendental functions for curved kinds, so they are computed only for
-// callers that use them (the --pixel ray tree now; textured materials later):
-// a scene that uses none pays nothing.
+// callers that use them (the --pixel ray tree; solid textures need only the
+// point): a scene that uses none pays nothing.
 enum class SurfaceDetail : std::uint8_t { Shading, WithCoordinates };
 
 struct SurfacePoint {

@@ -289,7 +289,7 @@ TEST_F(Cli, PixelNamesTheCsgOperandHit) {
 TEST_F(Cli, RendersEveryShippedScene) {
   for (const char* name :
        {"table.sc", "glass.sc", "chex.sc", "tree.sc", "tree-solid.sc", "solids.sc", "torus.sc",
-        "quadrics.sc", "csg.sc", "blobs.sc", "fog.sc"}) {
+        "quadrics.sc", "csg.sc", "blobs.sc", "fog.sc", "textures.sc"}) {
     const fs::path out = dir_ / (std::string(name) + ".png");
     const RunResult run =
         prism("render " + scene(name) + " -o " + out.string() + " --size 32 32 -q");

@@ -1,4 +1,5 @@
 #include "core/io/oiio_module.h"
+#include "core/texture/image_library.h"
 
 #include <dlfcn.h>
 
@@ -31,8 +32,8 @@ Module loadModule() {
   }
   const fs::path dir = exe.parent_path();
   const std::vector<fs::path> candidates = {
-      dir / kModuleName,                       // build tree: build/prism
-      dir.parent_path() / kModuleName,         // build tree: build/tests/*, build/bench/*
+      dir / kModuleName,                                 // build tree: build/prism
+      dir.parent_path() / kModuleName,                   // build tree: build/tests/*, build/bench/*
       dir.parent_path() / "lib" / "prism" / kModuleName, // install tree: bin/../lib/prism
   };
   std::string tried;
@@ -61,6 +62,25 @@ void* oiioModuleSymbol(const char* name) {
   if (!symbol)
     throw std::runtime_error(std::string("the OpenImageIO module has no entry '") + name + "'");
   return symbol;
+}
+
+} // namespace prism
+
+namespace prism {
+
+const TextureBackend& oiioTextureBackend() {
+  static const TextureBackend backend = [] {
+    TextureBackend b;
+    b.create =
+        reinterpret_cast<PrismTextureCreateFn>(oiioModuleSymbol("prism_oiio_texture_create"));
+    b.destroy =
+        reinterpret_cast<PrismTextureDestroyFn>(oiioModuleSymbol("prism_oiio_texture_destroy"));
+    b.load = reinterpret_cast<decltype(b.load)>(oiioModuleSymbol("prism_oiio_texture_load"));
+    b.lookup =
+        reinterpret_cast<PrismTextureLookupFn>(oiioModuleSymbol("prism_oiio_texture_lookup"));
+    return b;
+  }();
+  return backend;
 }
 
 } // namespace prism

@@ -8,6 +8,7 @@
 // (ReaderBase); what a command adds goes through the SceneBuilder.
 #include "core/io/scene_parser.h"
 
+#include "core/io/oiio_module.h"
 #include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
 #include "core/io/shape_text/shape_text.h"
@@ -33,6 +34,7 @@
 #include <memory>
 #include <optional>
 #include <unordered_map>
+#include <variant>
 
 namespace prism {
 
@@ -101,7 +103,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 34> kKeywords;
+  static const std::array<Keyword, 36> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -164,6 +166,8 @@ private:
   void absorption(Command& c);
   void texture(Command& c);
   void textureSpace(Command& c);
+  void image(Command& c);
+  void uv(Command& c);
   void light(Command& c);
   void surface(Command& c);
   // Shapes.
@@ -233,6 +237,9 @@ private:
     fs::path identity; // identityOf(path)
   };
   const ResolvedInclude& resolveInclude(std::string_view raw);
+  // The PATH argument of `include` and `image`, unquoted; nothing (after
+  // reporting why) when it is missing, unclosed or empty.
+  std::optional<std::string_view> pathArgument(Command& c, const Token& token);
 
   Scene scene_;
   SceneBuilder build_{scene_}; // the current material and group too
@@ -252,7 +259,7 @@ private:
   std::optional<OpenMesh> mesh_;          // the open mesh block, if any
 };
 
-const std::array<Parser::Keyword, 34> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 36> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -265,6 +272,8 @@ const std::array<Parser::Keyword, 34> Parser::kKeywords = {{
     {"absorption", &Parser::absorption},
     {"texture", &Parser::texture},
     {"texture_space", &Parser::textureSpace},
+    {"image", &Parser::image},
+    {"uv", &Parser::uv},
     {"fog", &Parser::fog},
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
@@ -510,6 +519,73 @@ void Parser::textureSpace(Command& c) {
     m.texture.offset[row] = a[4 * row + 3].value;
   }
   m.texture.fromWorld = true;
+  build_.setMaterial(m);
+}
+
+// Amends the current surface: its colour is multiplied by an image's at the
+// surface coordinates (docs/scene-language.md#image-textures). PATH is
+// relative to the file that names it; words after it choose the wrap, the
+// encoding and point sampling.
+void Parser::image(Command& c) {
+  const Token token = file().lexer.nextPath();
+  const std::optional<std::string_view> raw = pathArgument(c, token);
+  if (!raw) return;
+  ImageMap map;
+  ImageEncoding encoding = ImageEncoding::Auto;
+  for (Token word = file().lexer.peek(); !word.atEnd(); word = file().lexer.peek()) {
+    if (const std::optional<ImageWrap> wrap = imageWrapNamed(word.text)) {
+      map.wrap = *wrap;
+    } else if (const std::optional<ImageEncoding> e = imageEncodingNamed(word.text)) {
+      encoding = *e;
+    } else if (word.text == "unfiltered") {
+      map.filtered = false;
+    } else {
+      break;
+    }
+    file().lexer.next();
+  }
+  const fs::path path = (fs::path(file().name).parent_path() / fs::path(*raw)).lexically_normal();
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    error(token, "image: cannot read '" + name +
+                     "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
+    return;
+  }
+  if (!scene_.images) scene_.images = std::make_shared<ImageLibrary>(oiioTextureBackend());
+  std::variant<std::uint32_t, std::string> loaded;
+  try {
+    loaded = scene_.images->load(name, encoding);
+  } catch (const std::runtime_error& e) { // the OpenImageIO module is missing
+    loaded = std::string(e.what());
+  }
+  if (const std::string* why = std::get_if<std::string>(&loaded)) {
+    error(token, "image: cannot read '" + name + "': " + *why);
+    return;
+  }
+  map.image = std::get<std::uint32_t>(loaded);
+  map.peak = scene_.images->info(map.image).peak;
+  Material m = build_.currentMaterialValue();
+  m.image = map;
+  build_.setMaterial(m);
+}
+
+// Amends the current image map: image coordinates are
+// s = u SU + OU, t = v SV + OV.
+void Parser::uv(Command& c) {
+  Arg a[4];
+  if (!numbers(c, {"SU", "SV", "OU", "OV"}, a) || !c.valid) return;
+  for (int i = 0; i < 2; ++i)
+    if (a[i].value == 0.0)
+      invalid(c, a[i].token, std::string(i == 0 ? "SU" : "SV") + " must not be 0");
+  if (!c.valid) return;
+  Material m = build_.currentMaterialValue();
+  if (!m.image.active()) {
+    error(c.keyword, "uv: the current surface has no image (give 'image' first)");
+    return;
+  }
+  m.image.scale = {a[0].value, a[1].value};
+  m.image.offset = {a[2].value, a[3].value};
   build_.setMaterial(m);
 }
 
@@ -1148,27 +1224,33 @@ std::optional<std::string> Parser::readInclude(const fs::path& path, const fs::p
   return std::nullopt;
 }
 
-void Parser::include(Command& c) {
-  const Token token = file().lexer.nextPath();
+std::optional<std::string_view> Parser::pathArgument(Command& c, const Token& token) {
   if (token.atEnd()) {
-    error(c.keyword, "include: expected PATH but reached the end of the file");
-    return;
+    error(c.keyword, c.name + ": expected PATH but reached the end of the file");
+    return std::nullopt;
   }
   std::string_view raw = token.text;
   if (raw.front() == '"') {
     if (raw.size() < 2 || raw.back() != '"') {
-      error(token, "include: PATH has no closing '\"' on its line");
+      error(token, c.name + ": PATH has no closing '\"' on its line");
       skipNumbers();
-      return;
+      return std::nullopt;
     }
     raw = raw.substr(1, raw.size() - 2);
   }
   if (raw.empty()) {
-    error(token, "include: PATH is empty");
+    error(token, c.name + ": PATH is empty");
     skipNumbers();
-    return;
+    return std::nullopt;
   }
-  const ResolvedInclude& resolved = resolveInclude(raw);
+  return raw;
+}
+
+void Parser::include(Command& c) {
+  const Token token = file().lexer.nextPath();
+  const std::optional<std::string_view> raw = pathArgument(c, token);
+  if (!raw) return;
+  const ResolvedInclude& resolved = resolveInclude(*raw);
   const fs::path& path = resolved.path;
   const std::string& name = resolved.name;
   const fs::path& identity = resolved.identity;

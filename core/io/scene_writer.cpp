@@ -82,7 +82,21 @@ private:
                 << num(m.kst) << "  " << num(m.e) << " " << num(m.ir) << "\n";
     if (m.absorbs()) line(depth) << "absorption " << vec(m.absorption) << "\n";
     if (m.texture.active()) texture(m.texture, depth);
+    if (m.image.active()) image(m.image, depth);
     current_ = m;
+  }
+
+  // The path as the scene resolved it (absolute), so the text reads the
+  // same image wherever it is written.
+  void image(const ImageMap& map, int depth) {
+    const ImageInfo& info = scene_.images->info(map.image);
+    std::ostream& out = line(depth) << "image \"" << info.path << "\" " << imageWrapName(map.wrap)
+                                    << " " << imageEncodingName(info.asked);
+    if (!map.filtered) out << " unfiltered";
+    out << "\n";
+    if (map.scale != Vec2(1.0) || map.offset != Vec2(0.0))
+      line(depth) << "uv " << num(map.scale.x) << " " << num(map.scale.y) << "  "
+                  << num(map.offset.x) << " " << num(map.offset.y) << "\n";
   }
 
   // The texture's map from the world (its primitive's object space composed

@@ -37,6 +37,7 @@ void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pix
   for (std::size_t i = 0; i < pixels.size(); ++i)
     rays[i] = camera.eyeRay(pixels[i].x + 0.5, pixels[i].y + 0.5);
   counts.eyePrimary += (long long)pixels.size();
+  tracer.setEyeFootprint(camera.pixelSpread());
   Color colors[Accel::kMaxBundle];
   tracer.traceBundle(std::span(rays, pixels.size()), std::span(colors, pixels.size()), counts);
   for (std::size_t i = 0; i < pixels.size(); ++i)
@@ -80,7 +81,9 @@ Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool ji
       rays[j * 4 + i] = camera.eyeRay(x + (i + u) / 4.0, y + (j + v) / 4.0);
     }
   }
-  // The 16 rays share the eye: one bundle.
+  // The 16 rays share the eye: one bundle. Each samples a sixteenth of the
+  // pixel, so its footprint is a quarter of the pixel's side.
+  tracer.setEyeFootprint(camera.pixelSpread() / 4.0);
   Color colors[16];
   tracer.traceBundle(rays, colors, counts);
   counts.eyeAntialias += 16;

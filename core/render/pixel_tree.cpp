@@ -14,6 +14,7 @@ std::string pixelRayTreeText(const Scene& scene, const Accel& accel, const Rende
   Tracer tracer(scene, accel, settings.maxDepth);
   RayCounts counts;
   RayTreeNode root;
+  tracer.setEyeFootprint(camera.pixelSpread());
   tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts, &root);
   std::ostringstream out;
   out << "pixel (" << x << ", " << y << ") of " << settings.width << " x " << settings.height

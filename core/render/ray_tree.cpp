@@ -77,6 +77,13 @@ void printNode(std::ostream& out, const RayTreeNode& node, const Scene& scene, i
         << node.textureScale << ") at texture-space point " << fmt(node.texture.point) << ": value "
         << node.texture.value << ", the material blended to it:\n";
   }
+  if (const ImageLookup& i = node.image; i.image != kNoImage) {
+    const ImageInfo& info = scene.images->info(i.image);
+    out << pad << "  image '" << info.path << "' (" << info.width << " x " << info.height << ", "
+        << imageEncodingName(info.decoded) << ") at (s, t) = (" << i.st.x << ", " << i.st.y
+        << "), footprint " << i.footprint << " wide, axes (" << i.dx.x << ", " << i.dx.y
+        << ") and (" << i.dy.x << ", " << i.dy.y << "): linear " << fmt(i.value) << ", times C:\n";
+  }
   const Material& m = node.material;
   out << pad << "  material C " << fmt(m.color) << " kdr " << m.kdr << " ksr " << m.ksr << " kst "
       << m.kst << " e " << m.e << " ir " << m.ir << "\n";

@@ -42,6 +42,7 @@ struct RayTreeNode {
   TextureLookup texture;   // the lookup, when the stored material had a texture
   TextureKind textureKind = TextureKind::None;
   double textureScale = 1.0;
+  ImageLookup image; // the image lookup, when the stored material had an image
   bool leaving = false;
   bool totalInternalReflection = false;
   std::vector<LightTerm> lights;

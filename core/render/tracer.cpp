@@ -63,6 +63,7 @@ Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCach
   if (cache == BlockerCache::On) lastBlocker_.resize(std::size_t(maxDepth) * scene.lights.size());
   media_ = scene.fog.active() || std::any_of(scene.materials.begin(), scene.materials.end(),
                                              [](const Material& m) { return m.absorbs(); });
+  images_ = scene.images != nullptr;
 }
 
 // Eye rays start in the air. A mirror ray travels where the ray it mirrors
@@ -70,18 +71,18 @@ Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCach
 // leaving it in the air: the same rule as refraction's index ratio (air
 // outside every solid, no solid inside another).
 namespace {
-class InsideScope {
+// Sets a per-ray member of the tracer (the medium, the footprint) for a new
+// ray and restores the parent's when the new ray is done.
+template <class T> class ScopedValue {
 public:
-  InsideScope(const Material*& inside, const Material* now) : inside_(inside), saved_(inside) {
-    inside = now;
-  }
-  ~InsideScope() { inside_ = saved_; }
-  InsideScope(const InsideScope&) = delete;
-  InsideScope& operator=(const InsideScope&) = delete;
+  ScopedValue(T& value, const T& now) : value_(value), saved_(value) { value = now; }
+  ~ScopedValue() { value_ = saved_; }
+  ScopedValue(const ScopedValue&) = delete;
+  ScopedValue& operator=(const ScopedValue&) = delete;
 
 private:
-  const Material*& inside_;
-  const Material* saved_;
+  T& value_;
+  T saved_;
 };
 } // namespace
 
@@ -192,6 +193,7 @@ struct Tracer::Incidence {
   Vec3 nr;      // the normal mirror and refracted rays turn about
   SurfaceFrame frame;
   const PrimitiveRef* skip; // the flat primitive new rays leave, or null
+  double footprint;         // the ray cone's width here (scenes with images only)
 };
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts,
@@ -204,7 +206,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
   // A textured material is blended at the point, out of line; every other
   // one is used in place, at the cost of one well-predicted test.
   const Material& m = scene_.materialAt(surface);
-  if (m.texture.active()) [[unlikely]]
+  if (m.textured()) [[unlikely]]
     return shadeTextured(ray, hit, point, surface, m, depth, counts, record);
   return shadeWith(ray, hit, point, surface, m, depth, counts, record);
 }
@@ -212,13 +214,65 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
 [[gnu::noinline]] Color Tracer::shadeTextured(const Ray& ray, const Hit& hit, const Vec3& point,
                                               const SurfacePoint& surface, const Material& stored,
                                               int depth, RayCounts& counts, RayTreeNode* record) {
-  const Material blended = textureAt(stored, point, record != nullptr ? &record->texture : nullptr);
+  Material blended = textureAt(stored, point, record != nullptr ? &record->texture : nullptr);
+  if (stored.image.active()) {
+    blended.color *= imageColor(ray, hit, point, surface, stored.image,
+                                record != nullptr ? &record->image : nullptr);
+    blended.image = ImageMap{};
+  }
   const Color radiance = shadeWith(ray, hit, point, surface, blended, depth, counts, record);
   if (record != nullptr) {
     record->textureKind = stored.texture.kind;
     record->textureScale = stored.texture.scale;
   }
   return radiance;
+}
+
+namespace {
+// Whether a kind's surface coordinates run around it (an angle's fraction of
+// a turn), so that two points across the seam differ by about a whole turn.
+bool wrapsAround(PrimitiveKind kind) {
+  return kind != kindOf<Polygon> && kind != kindOf<Triangle> && kind != kindOf<Box>;
+}
+
+// `d` taken the short way round where coordinates wrap.
+Vec2 acrossSeam(Vec2 d, bool wraps) {
+  if (!wraps) return d;
+  return {d.x - std::round(d.x), d.y - std::round(d.y)};
+}
+} // namespace
+
+// The footprint of the ray cone on the surface is an ellipse: its width
+// across the ray's plane of incidence, and the width over cos(theta) along
+// it. Its two half-axes, carried into image coordinates through the kind's
+// own surface coordinates (a difference across each axis, the short way
+// round a seam), are the derivatives the TextureSystem filters over.
+Color Tracer::imageColor(const Ray& ray, const Hit& hit, const Vec3& point,
+                         const SurfacePoint& surface, const ImageMap& map,
+                         ImageLookup* lookup) const {
+  const double width = cone_.width + cone_.spread * hit.t;
+  const Vec3& n = surface.outward;
+  Vec3 across = glm::cross(n, ray.dir);
+  const double sine = glm::length(across);
+  if (sine > 1e-12) {
+    across /= sine;
+  } else { // straight on: any tangent will do
+    across = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+  }
+  const Vec3 along = glm::cross(n, across);
+  // Beyond 1000:1 the filter's own anisotropy limit blurs anyway.
+  const double cosine = std::max(std::abs(glm::dot(n, ray.dir)), 1e-3);
+  const Vec3 a = (0.5 * width) * across;
+  const Vec3 b = (0.5 * width / cosine) * along;
+  const PrimitiveRef ref = hit.primitive;
+  auto uv = [&](const Vec3& p) { return scene_.imageCoordinates(ref, p); };
+  const bool wraps = wrapsAround(ref.kind);
+  const Vec2 st = uv(point) * map.scale + map.offset;
+  const Vec2 dx = acrossSeam(uv(point + a) - uv(point - a), wraps) * map.scale;
+  const Vec2 dy = acrossSeam(uv(point + b) - uv(point - b), wraps) * map.scale;
+  const Color value = scene_.images->lookup(map, st, dx, dy);
+  if (lookup != nullptr) *lookup = {map.image, st, dx, dy, width, value};
+  return value;
 }
 
 [[gnu::always_inline]] inline Color
@@ -242,8 +296,13 @@ Tracer::shadeWith(const Ray& ray, const Hit& hit, const Vec3& point, const Surfa
   // refracting about it would send the ray through the surface, so those use
   // `g` there. (For every other primitive n is g and this changes nothing.)
   const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
-  const Incidence at{point, leaving, n,
-                     nr,    frame,   isFlat(hit.primitive.kind) ? &hit.primitive : nullptr};
+  const Incidence at{point,
+                     leaving,
+                     n,
+                     nr,
+                     frame,
+                     isFlat(hit.primitive.kind) ? &hit.primitive : nullptr,
+                     images_ ? cone_.width + cone_.spread * hit.t : 0.0};
 
   const DirectLight direct = directLighting(ray, at, m, depth, counts, record);
   if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid
@@ -321,6 +380,10 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
                                                        RayCounts& counts, RayTreeNode* record) {
   if (!(depth < maxDepth_ && m.ksr > 0.0)) return Color(0.0);
   const Ray r{at.frame.above, reflect(ray.dir, at.nr)};
+  // A mirror keeps the cone's spread: exact for a flat one; a curved mirror
+  // would spread it further, which this leaves out (the image reflected in a
+  // ball is filtered as if the ball were flat).
+  const ScopedValue<RayCone> cone(cone_, images_ ? RayCone{at.footprint, cone_.spread} : cone_);
   if (bailout_ != nullptr)
     return m.ksr * traceOrSkip(r, RayKind::Reflected, m, depth, counts, record, at.skip);
   ++counts.reflected;
@@ -340,7 +403,14 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
     return Color(0.0);
   }
   const Ray t{at.frame.below, dir};
-  const InsideScope scope(inside_, at.leaving ? nullptr : &m);
+  // Through a flat interface the cone's angle changes as the ray's does:
+  // d(theta_t) / d(theta_i) = eta cos(theta_i) / cos(theta_t).
+  const ScopedValue<RayCone> cone(
+      cone_, images_
+                 ? RayCone{at.footprint, cone_.spread * eta * std::abs(glm::dot(ray.dir, at.nr)) /
+                                             std::max(std::abs(glm::dot(dir, at.nr)), 1e-3)}
+                 : cone_);
+  const ScopedValue<const Material*> medium(inside_, at.leaving ? nullptr : &m);
   // After the test for total internal reflection, which is counted as usual.
   if (bailout_ != nullptr)
     return m.kst * traceOrSkip(t, RayKind::Transmitted, m, depth, counts, record, at.skip);

@@ -51,6 +51,14 @@ public:
 
   int maxDepth() const { return maxDepth_; }
 
+  // The angle (radians) an eye ray's footprint spans from now on: the size
+  // of the pixel, or of the subpixel, it samples at distance 1 from the eye
+  // (Camera::pixelSpread). Image textures are filtered over the footprint of
+  // this cone where it meets their surface, also after mirrors and
+  // refractions (docs/rendering-model.md#image-textures); 0 (the default)
+  // samples them at a point.
+  void setEyeFootprint(double spread) { cone_ = {0.0, spread}; }
+
   // Skip mirror and refracted rays by `bound` (core/render/bailout.h) from now
   // on; an inactive bound (the default) traces exactly. `bound` must outlive
   // the tracer's use of it.
@@ -61,6 +69,12 @@ private:
   struct Incidence;
   // The two local terms of the shading formula: C_mat kdr [I_a + sum diffuse]
   // and ksr sum specular.
+  // A ray's footprint: a cone of `width` (world units) at the ray's origin
+  // growing by `spread` per unit of length.
+  struct RayCone {
+    double width = 0.0;
+    double spread = 0.0;
+  };
   struct DirectLight {
     Color ambientDiffuse{0.0};
     Color highlight{0.0};
@@ -76,6 +90,9 @@ private:
   Color shadeTextured(const Ray& ray, const Hit& hit, const Vec3& point,
                       const SurfacePoint& surface, const Material& stored, int depth,
                       RayCounts& counts, RayTreeNode* record);
+  // The image's colour at the hit, filtered over the current ray's footprint.
+  Color imageColor(const Ray& ray, const Hit& hit, const Vec3& point, const SurfacePoint& surface,
+                   const ImageMap& map, ImageLookup* lookup) const;
   DirectLight directLighting(const Ray& ray, const Incidence& at, const Material& m, int depth,
                              RayCounts& counts, RayTreeNode* record);
   // ksr I_r, or 0 at the depth limit or for a material that is no mirror.
@@ -115,6 +132,11 @@ private:
   // The solid the current ray travels inside (its material absorbs), or null
   // for the air between solids. Set for each new ray and restored after it.
   const Material* inside_ = nullptr;
+  // The scene has images: only then is a ray's footprint followed.
+  bool images_ = false;
+  // The current ray's footprint (eye rays: setEyeFootprint). Set for each
+  // new ray and restored after it.
+  RayCone cone_;
 };
 
 } // namespace prism

@@ -24,6 +24,10 @@ public:
   Camera(const CameraSpec& spec, int width, int height);
 
   Ray eyeRay(double sx, double sy) const;
+  // The side of a pixel on the image plane at distance 1 from the eye: the
+  // angle (radians, small) one pixel spans at the image's centre, the
+  // spread of an eye ray's footprint (Tracer::setEyeFootprint).
+  double pixelSpread() const { return 2.0 * glm::length(upScaled_) / double(height_); }
 
   int width() const { return width_; }
   int height() const { return height_; }

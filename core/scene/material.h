@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/math/math.h"
+#include "core/texture/image_map.h"
 #include "core/texture/texture.h"
 
 namespace prism {
@@ -21,7 +22,12 @@ struct Material {
   // A procedural texture varying C, kdr, ksr, kst and e over the surface
   // (`texture`, core/scene/material_blend.h); none by default.
   Texture texture{};
+  // An image multiplying C over the surface (`image`, image_map.h); after
+  // the procedural texture's blend when there are both. None by default.
+  ImageMap image{};
 
+  // Whether shading must look anything up at the hit point.
+  bool textured() const { return texture.active() || image.active(); }
   bool absorbs() const { return absorption.r > 0.0 || absorption.g > 0.0 || absorption.b > 0.0; }
 
   bool operator==(const Material&) const = default;

@@ -39,12 +39,20 @@ Material textureBlend(const Material& m, double v) {
   return combineEnds(m, [v](double a, double b) { return a == b ? a : (1.0 - v) * a + v * b; });
 }
 
+// An image multiplies C by a lookup between 0 and its peak (the filters are
+// weighted averages with non-negative weights).
 Material coefficientCeiling(const Material& m) {
-  return combineEnds(m, [](double a, double b) { return std::max(a, b); });
+  Material c = combineEnds(m, [](double a, double b) { return std::max(a, b); });
+  if (m.image.active()) c.color *= m.image.peak;
+  c.image = ImageMap{};
+  return c;
 }
 
 Material coefficientFloor(const Material& m) {
-  return combineEnds(m, [](double a, double b) { return std::min(a, b); });
+  Material c = combineEnds(m, [](double a, double b) { return std::min(a, b); });
+  if (m.image.active()) c.color = Color(0.0);
+  c.image = ImageMap{};
+  return c;
 }
 
 } // namespace prism

@@ -25,7 +25,8 @@ Material textureBlend(const Material& m, double value);
 // every blend lies between them. Used where a bound over the scene's
 // materials is taken: for the products C kdr a blend may exceed both ends
 // (0.5 (1, 0) + 0.5 (0, 1) gives 0.25 > 0), but never the product of the
-// ceilings. `m` itself when untextured.
+// ceilings. An image's colour runs from 0 to its peak per channel. `m`
+// itself when untextured; the result has no image.
 Material coefficientCeiling(const Material& m);
 Material coefficientFloor(const Material& m);
 

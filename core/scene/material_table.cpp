@@ -22,7 +22,14 @@ MaterialTable::Key MaterialTable::keyOf(const Material& m) {
   const Texture& t = m.texture;
   Key key{m.color.r, m.color.g, m.color.b,      m.kdr,          m.ksr,         m.kst,
           m.e,       m.ir,      m.absorption.r, m.absorption.g, m.absorption.b};
-  // Zeros for an untextured material (whose texture is the default).
+  // Zeros for an untextured material (whose texture is the default), and
+  // for one without an image.
+  if (const ImageMap& i = m.image; i.active()) {
+    const double image[8] = {
+        double(i.image),       i.scale.x, i.scale.y, i.offset.x, i.offset.y, double(i.wrap),
+        i.filtered ? 1.0 : 0.0};
+    std::copy(std::begin(image), std::end(image), key.begin() + 11 + 22);
+  }
   if (!t.active()) return key;
   const double texture[22] = {double(t.kind), t.scale,        t.color.r,
                               t.color.g,      t.color.b,      t.kdr,

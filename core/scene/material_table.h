@@ -24,7 +24,7 @@ public:
   std::uint32_t intern(const Material& m);
 
 private:
-  using Key = std::array<double, 11 + 22>; // a textured material's texture too
+  using Key = std::array<double, 11 + 22 + 8>; // a texture and an image map too
   // Agrees with the == of Key, which takes -0 and 0 as equal.
   struct KeyHash {
     std::size_t operator()(const Key& key) const;

@@ -14,6 +14,14 @@ std::uint32_t Scene::materialIndex(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.material; });
 }
 
+Vec2 Scene::imageCoordinates(PrimitiveRef ref, const Vec3& point) const {
+  const Vec2 uv = visit(ref, [&](const auto& shape) { return uvAt(shape, arrays(), point); });
+  if (ref.kind != kindOf<Triangle> || ref.index >= triangleUvs.size()) return uv;
+  // A triangle's uvAt is the point's barycentric weights of vertices 1 and 2.
+  const std::array<Vec2, 3>& at = triangleUvs[ref.index];
+  return (1.0 - uv.x - uv.y) * at[0] + uv.x * at[1] + uv.y * at[2];
+}
+
 Origin Scene::origin(PrimitiveRef ref) const {
   return visit(ref, [](const auto& shape) { return shape.origin; });
 }

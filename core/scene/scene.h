@@ -5,6 +5,10 @@
 #include "core/scene/material.h"
 #include "core/shapes/polygon_edges.h"
 #include "core/shapes/shape_kinds.h"
+#include "core/texture/image_library.h"
+
+#include <array>
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -49,6 +53,14 @@ struct Scene {
   std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices
   std::vector<Vec3> meshVertices;                   // shared by triangles (Triangle::vertex)
   std::vector<Vec3> meshNormals;                    // unit vertex normals of smooth triangles
+  // Per-vertex surface coordinates of the triangles (OBJ `vt`, .sc
+  // `triangle_uv`), parallel to shapes<Triangle>(); empty when no triangle
+  // has them, and it may end before the last triangles. A triangle without
+  // its own has (0, 0), (1, 0), (0, 1): its barycentric coordinates.
+  std::vector<std::array<Vec2, 3>> triangleUvs;
+  // The images the materials' image maps read (ImageMap::image); null when
+  // there are none. Shared by the scene's copies.
+  std::shared_ptr<ImageLibrary> images;
   // The operands of every CSG node and the nested nodes (csg.h); the roots
   // are primitives, in shapes<Csg>().
   std::vector<CsgOperand> csgOperands;
@@ -99,6 +111,9 @@ struct Scene {
   // ray.at(t).
   SurfacePoint surfaceAt(PrimitiveRef ref, const Ray& ray, double t,
                          SurfaceDetail detail = SurfaceDetail::Shading) const;
+  // The surface coordinates an image map reads at `point` on the primitive:
+  // uvAt, and for a triangle with per-vertex coordinates their blend.
+  Vec2 imageCoordinates(PrimitiveRef ref, const Vec3& point) const;
   // The material stored for a surface point: the one place shading looks it
   // up. A textured one still has to be blended at the point (textureAt in
   // core/scene/material_blend.h), which the tracer does.

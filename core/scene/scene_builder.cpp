@@ -76,6 +76,12 @@ PrimitiveRef SceneBuilder::triangle(const std::array<Vec3, 3>& vertices,
   return inGroup({kindOf<Triangle>, std::uint32_t(scene_.shapes<Triangle>().size() - 1)});
 }
 
+void SceneBuilder::setTriangleUvs(std::uint32_t index, const std::array<Vec2, 3>& uvs) {
+  static constexpr std::array<Vec2, 3> kBarycentric = {Vec2(0.0), Vec2(1.0, 0.0), Vec2(0.0, 1.0)};
+  scene_.triangleUvs.resize(scene_.shapes<Triangle>().size(), kBarycentric);
+  scene_.triangleUvs[index] = uvs;
+}
+
 std::optional<PrimitiveRef> SceneBuilder::meshTriangle(std::array<std::uint32_t, 3> vertex,
                                                        const std::array<std::uint32_t, 3>* normals,
                                                        std::uint32_t material, Origin origin) {

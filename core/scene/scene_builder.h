@@ -121,6 +121,11 @@ public:
                                            const std::array<std::uint32_t, 3>* normals,
                                            std::uint32_t material, Origin origin);
 
+  // Gives triangle `index` (of shapes<Triangle>()) per-vertex surface
+  // coordinates, in its vertices' order (Scene::triangleUvs; the others keep
+  // their barycentric ones).
+  void setTriangleUvs(std::uint32_t index, const std::array<Vec2, 3>& uvs);
+
   // --- CSG nodes (core/shapes/csg.h)
 
   // Opens a node: until the matching endCsg, closed shapes added are its

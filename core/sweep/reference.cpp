@@ -140,8 +140,10 @@ ReferencePicture renderReference(const Scene& scene, const Accel& accel,
                        for (int x = tile.x0; x < tile.x1; ++x) {
                          const std::size_t index =
                              std::size_t(y) * std::size_t(width) + std::size_t(x);
-                         if (!tracer || tracer->maxDepth() != reference.depth[index])
+                         if (!tracer || tracer->maxDepth() != reference.depth[index]) {
                            tracer.emplace(scene, accel, reference.depth[index]);
+                           tracer->setEyeFootprint(camera.pixelSpread() / kReferenceSide);
+                         }
                          for (int j = 0; j < kReferenceSide; ++j) {
                            for (int i = 0; i < kReferenceSide; ++i) {
                              double px = 0.0, py = 0.0;

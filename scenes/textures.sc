@@ -1,16 +1,22 @@
-# textures.sc -- procedural solid textures: a marble ball, a wooden log, a
-# noise-clouded ball and a striped block on a floor whose checker tiles
-# alternate between matt stone and mirror (docs/scene-language.md#textures).
+# textures.sc -- textures: a marble ball, a wooden log, a noise-clouded ball
+# and a striped block (procedural solid textures), an image-textured globe,
+# and a floor of image tiles running to the horizon
+# (docs/scene-language.md#textures, #image-textures).
 #
 # What to look for:
-#  * the floor's mirror tiles reflect the objects and the sky, its stone
-#    tiles are lit and shadowed as usual: one `texture checker` varies kdr,
-#    ksr and the colour between the two ends;
+#  * the floor's tiles stay crisp near the camera and fade smoothly to their
+#    mean toward the horizon, with no moire: each lookup is filtered over the
+#    ray's footprint (docs/rendering-model.md#image-textures compares it
+#    unfiltered). The floor is
+#    a faint mirror, and the tiles seen in the objects' reflections are
+#    filtered by the reflected rays' footprints too;
 #  * the marble veins and the log's rings are solid: the log's end shows the
 #    rings, its side the grain they make where the surface cuts them;
+#  * the globe is tilted 23.4 degrees and turned: its image turns with it;
 #  * every textured object is placed by push/translate/rotate and its
 #    texture moves with it (object space).
 #
+# The images are made by tools/texture_gen (from Prism's own noise).
 # Units: metres. The floor is at y = 0.
 
 resolution 640 400
@@ -26,14 +32,11 @@ light -6 9 6      90 86 80    # key light, upper left front
 light 7 6 3       35 38 45    # fill from the right, cool
 
 # ------------------------------------------------------------ the floor
-# The polygon lies at y = 0.5 of its own space, inside a checker cell (a
-# tile boundary in the surface would speckle it), moved down to y = 0.
-push
-  translate 0 -0.5 0
-  surface 0.78 0.74 0.68  0.9 0 0  1 1                  # matt stone ...
-  texture checker 1.5  0.1 0.11 0.13  0.1 0.85 0  400   # ... and dark mirror tiles
-  polygon 4  -40 0.5 40  40 0.5 40  40 0.5 -40  -40 0.5 -40
-pop
+# One repeat of the image is 2 x 2 tiles; uv 1/3: tiles of 1.5 m.
+surface 1 1 1  0.85 0.12 0  300 1
+image "images/tiles.png" repeat
+uv 0.3333333333 0.3333333333  0 0
+polygon 4  -150 0 150  150 0 150  150 0 -150  -150 0 -150
 
 # ------------------------------------------------------------ marble ball
 push
@@ -54,12 +57,24 @@ push
   cylinder 0 0 -1.3  0 0 1.3  0.8
 pop
 
+# ------------------------------------------------------------ globe
+# A sphere under a rotation keeps its image turned
+# with it (a turned, image-textured sphere is stored as an ellipsoid).
+push
+  translate 0.3 1.15 -2.6
+  rotate 0 0 1 23.4                                     # the axis tilted
+  rotate 0 1 0 -70                                      # a continent toward us
+  surface 1 1 1  0.9 0.25 0  60 1
+  image "images/globe.png" repeat srgb
+  sphere 0 0 0 1.15
+pop
+
 # ------------------------------------------------------------ noise ball
 push
-  translate 0.1 0.75 -2.2
+  translate 2.0 0.5 2.6
   surface 0.12 0.25 0.6  0.9 0.3 0  120 1               # deep blue ...
-  texture noise 0.45  0.85 0.9 0.95  0.9 0.3 0  120     # ... clouded white
-  sphere 0 0 0 0.75
+  texture noise 0.3  0.85 0.9 0.95  0.9 0.3 0  120      # ... clouded white
+  sphere 0 0 0 0.5
 pop
 
 # ------------------------------------------------------------ striped block

@@ -601,7 +601,12 @@ void Parser::sphere(Command& c) {
 
   const Vec3 center = transform_.point(vec(a));
   double s = 1.0;
-  if (transform_.isSimilarity(&s)) {
+  // A sphere's surface coordinates are in world axes; an image on a turned
+  // (or mirrored) sphere must turn with it, so that one is an ellipsoid,
+  // whose coordinates are its own.
+  const bool turnsImage = build_.currentMaterialValue().image.active() &&
+                          transform_.linear() != Mat3(transform_.linear()[0][0]);
+  if (transform_.isSimilarity(&s) && !turnsImage) {
     const double radius = r.value * s;
     if (!(radius > 0.0)) {
       error(c.keyword, "sphere: too small after the current transform");

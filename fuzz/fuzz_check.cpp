@@ -1,6 +1,7 @@
 #include "fuzz/fuzz_check.h"
 
 #include "core/accel/accel.h"
+#include "core/io/image_io.h"
 #include "core/render/ray_tree.h"
 #include "core/render/tracer.h"
 #include "core/scene/camera.h"
@@ -116,7 +117,7 @@ void removeSandbox() {
 }
 
 // Parts a fuzzed .sc file may include by name: a valid one, cycles, errors and
-// a directory.
+// a directory; and an image.
 void stageScParts(const fs::path& dir) {
   const std::pair<const char*, const char*> kParts[] = {
       {"part.sc", "surface 1 0.5 0 0.6 0.4 0 20 1\npush\n  translate 0 1 0\n"
@@ -131,6 +132,8 @@ void stageScParts(const fs::path& dir) {
     const std::string_view bytes(body);
     writeFile(dir / name, &bytes);
   }
+  // An image `image` may name: 2 x 2 texels, red, green / blue, grey.
+  writeImage8(dir / "tex.png", 2, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255, 128, 128, 128});
   fs::create_directory(dir / "folder");
 }
 
@@ -206,7 +209,8 @@ void writeFile(const fs::path& path, const std::string_view* bytes) {
 }
 
 bool includeLeavesSandbox(std::string_view scText) {
-  return scText.find("include") != std::string_view::npos &&
+  return (scText.find("include") != std::string_view::npos ||
+          scText.find("image") != std::string_view::npos) &&
          scText.find('/') != std::string_view::npos;
 }
 

@@ -272,8 +272,6 @@ const std::array<Parser::Keyword, 36> Parser::kKeywords = {{
     {"absorption", &Parser::absorption},
     {"texture", &Parser::texture},
     {"texture_space", &Parser::textureSpace},
-    {"image", &Parser::image},
-    {"uv", &Parser::uv},
     {"fog", &Parser::fog},
     {"sphere", &Parser::sphere},
     {"polygon", &Parser::polygon},
@@ -296,6 +294,10 @@ const std::array<Parser::Keyword, 36> Parser::kKeywords = {{
     {"scale", &Parser::scale},
     {"rotate", &Parser::rotate},
     {"include", &Parser::include},
+    // Last: the table is searched in order for every command, and these are
+    // written once per surface at most.
+    {"image", &Parser::image},
+    {"uv", &Parser::uv},
 }};
 
 Parser::Handler Parser::handlerFor(std::string_view name) {

@@ -64,6 +64,7 @@ Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCach
   media_ = scene.fog.active() || std::any_of(scene.materials.begin(), scene.materials.end(),
                                              [](const Material& m) { return m.absorbs(); });
   images_ = scene.images != nullptr;
+  if (images_) cones_.resize(std::size_t(maxDepth) + 2);
 }
 
 // Eye rays start in the air. A mirror ray travels where the ray it mirrors
@@ -216,7 +217,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
                                               int depth, RayCounts& counts, RayTreeNode* record) {
   Material blended = textureAt(stored, point, record != nullptr ? &record->texture : nullptr);
   if (stored.image.active()) {
-    blended.color *= imageColor(ray, hit, point, surface, stored.image,
+    blended.color *= imageColor(ray, hit, point, surface, stored.image, depth,
                                 record != nullptr ? &record->image : nullptr);
     blended.image = ImageMap{};
   }
@@ -248,9 +249,10 @@ Vec2 acrossSeam(Vec2 d, bool wraps) {
 // own surface coordinates (a difference across each axis, the short way
 // round a seam), are the derivatives the TextureSystem filters over.
 Color Tracer::imageColor(const Ray& ray, const Hit& hit, const Vec3& point,
-                         const SurfacePoint& surface, const ImageMap& map,
+                         const SurfacePoint& surface, const ImageMap& map, int depth,
                          ImageLookup* lookup) const {
-  const double width = cone_.width + cone_.spread * hit.t;
+  const RayCone& cone = cones_[std::size_t(depth)];
+  const double width = cone.width + cone.spread * hit.t;
   const Vec3& n = surface.outward;
   Vec3 across = glm::cross(n, ray.dir);
   const double sine = glm::length(across);
@@ -296,13 +298,14 @@ Tracer::shadeWith(const Ray& ray, const Hit& hit, const Vec3& point, const Surfa
   // refracting about it would send the ray through the surface, so those use
   // `g` there. (For every other primitive n is g and this changes nothing.)
   const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
-  const Incidence at{point,
-                     leaving,
-                     n,
-                     nr,
-                     frame,
-                     isFlat(hit.primitive.kind) ? &hit.primitive : nullptr,
-                     images_ ? cone_.width + cone_.spread * hit.t : 0.0};
+  const Incidence at{
+      point,
+      leaving,
+      n,
+      nr,
+      frame,
+      isFlat(hit.primitive.kind) ? &hit.primitive : nullptr,
+      images_ ? cones_[std::size_t(depth)].width + cones_[std::size_t(depth)].spread * hit.t : 0.0};
 
   const DirectLight direct = directLighting(ray, at, m, depth, counts, record);
   if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid
@@ -383,7 +386,7 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
   // A mirror keeps the cone's spread: exact for a flat one; a curved mirror
   // would spread it further, which this leaves out (the image reflected in a
   // ball is filtered as if the ball were flat).
-  const ScopedValue<RayCone> cone(cone_, images_ ? RayCone{at.footprint, cone_.spread} : cone_);
+  if (images_) cones_[std::size_t(depth) + 1] = {at.footprint, cones_[std::size_t(depth)].spread};
   if (bailout_ != nullptr)
     return m.ksr * traceOrSkip(r, RayKind::Reflected, m, depth, counts, record, at.skip);
   ++counts.reflected;
@@ -405,11 +408,12 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
   const Ray t{at.frame.below, dir};
   // Through a flat interface the cone's angle changes as the ray's does:
   // d(theta_t) / d(theta_i) = eta cos(theta_i) / cos(theta_t).
-  const ScopedValue<RayCone> cone(
-      cone_, images_
-                 ? RayCone{at.footprint, cone_.spread * eta * std::abs(glm::dot(ray.dir, at.nr)) /
-                                             std::max(std::abs(glm::dot(dir, at.nr)), 1e-3)}
-                 : cone_);
+  if (images_) {
+    const RayCone& cone = cones_[std::size_t(depth)];
+    const double turn =
+        eta * std::abs(glm::dot(ray.dir, at.nr)) / std::max(std::abs(glm::dot(dir, at.nr)), 1e-3);
+    cones_[std::size_t(depth) + 1] = {at.footprint, cone.spread * turn};
+  }
   const ScopedValue<const Material*> medium(inside_, at.leaving ? nullptr : &m);
   // After the test for total internal reflection, which is counted as usual.
   if (bailout_ != nullptr)

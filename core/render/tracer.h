@@ -57,7 +57,9 @@ public:
   // this cone where it meets their surface, also after mirrors and
   // refractions (docs/rendering-model.md#image-textures); 0 (the default)
   // samples them at a point.
-  void setEyeFootprint(double spread) { cone_ = {0.0, spread}; }
+  void setEyeFootprint(double spread) {
+    if (!cones_.empty()) cones_[1] = {0.0, spread};
+  }
 
   // Skip mirror and refracted rays by `bound` (core/render/bailout.h) from now
   // on; an inactive bound (the default) traces exactly. `bound` must outlive
@@ -92,7 +94,7 @@ private:
                       RayCounts& counts, RayTreeNode* record);
   // The image's colour at the hit, filtered over the current ray's footprint.
   Color imageColor(const Ray& ray, const Hit& hit, const Vec3& point, const SurfacePoint& surface,
-                   const ImageMap& map, ImageLookup* lookup) const;
+                   const ImageMap& map, int depth, ImageLookup* lookup) const;
   DirectLight directLighting(const Ray& ray, const Incidence& at, const Material& m, int depth,
                              RayCounts& counts, RayTreeNode* record);
   // ksr I_r, or 0 at the depth limit or for a material that is no mirror.
@@ -134,9 +136,11 @@ private:
   const Material* inside_ = nullptr;
   // The scene has images: only then is a ray's footprint followed.
   bool images_ = false;
-  // The current ray's footprint (eye rays: setEyeFootprint). Set for each
-  // new ray and restored after it.
-  RayCone cone_;
+  // The footprint of the current ray at each depth (index: depth; eye rays
+  // at 1 from setEyeFootprint), set for each new ray before it is traced:
+  // a ray's own entry is never written while it is being shaded, so nothing
+  // needs restoring. Empty for a scene without images.
+  std::vector<RayCone> cones_;
 };
 
 } // namespace prism

@@ -458,8 +458,9 @@ void writeTreeScene(std::FILE* out, long treePrims) {
                     "# Tests: many thousands of primitives rendered fast thanks to the push/pop\n"
                     "# hierarchy (each branch is a group holding its sub-branches; each twig of\n"
                     "# leaves is a group), shadows of the leaves on the ground and on each other,\n"
-                    "# and includes with transforms (parts/tree_body.sc includes parts/branch.sc,\n"
-                    "# parts/twig1-3.sc and parts/leaf.sc).\n\n");
+                    "# includes with transforms (parts/tree_body.sc includes parts/branch.sc,\n"
+                    "# parts/twig1-3.sc and parts/leaf.sc), and a texture in the object space of\n"
+                    "# an included part: the bark's furrows follow each segment's scale.\n\n");
   writeSetting(out, "0 3.5 28", "0 6.6 0", "40", "-25 12 30  180 200 260");
   std::fprintf(out, "# The tree: %ld primitives.\ninclude parts/tree_body.sc\n", treePrims);
 }

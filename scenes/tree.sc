@@ -5,8 +5,9 @@
 # Tests: many thousands of primitives rendered fast thanks to the push/pop
 # hierarchy (each branch is a group holding its sub-branches; each twig of
 # leaves is a group), shadows of the leaves on the ground and on each other,
-# and includes with transforms (parts/tree_body.sc includes parts/branch.sc,
-# parts/twig1-3.sc and parts/leaf.sc).
+# includes with transforms (parts/tree_body.sc includes parts/branch.sc,
+# parts/twig1-3.sc and parts/leaf.sc), and a texture in the object space of
+# an included part: the bark's furrows follow each segment's scale.
 
 resolution 512 512
 eye 0 3.5 28

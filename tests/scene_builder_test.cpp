@@ -266,5 +266,50 @@ TEST(SceneBuilder, ASecondBuilderContinuesTheMaterialTable) {
   EXPECT_EQ(second.material(colored(0.3)), 2u);
 }
 
+// The tracer asks Scene::hasMedia for every tile instead of scanning the
+// materials: the builder keeps the flag as materials enter, however they do.
+TEST(SceneBuilder, KeepsTrackOfAbsorbingMaterials) {
+  Material glass = colored(0.9);
+  glass.kst = 0.9;
+  glass.ir = 1.5;
+  Material amber = glass;
+  amber.absorption = Color(0.0, 0.2, 0.9);
+
+  Scene scene;
+  SceneBuilder build(scene);
+  build.material(glass);
+  build.setMaterial(colored(0.1));
+  build.currentMaterial();
+  EXPECT_FALSE(scene.absorbingMaterials);
+  EXPECT_FALSE(scene.hasMedia());
+  build.setMaterial(amber);
+  EXPECT_FALSE(scene.absorbingMaterials) << "not yet used by a primitive";
+  build.currentMaterial();
+  EXPECT_TRUE(scene.absorbingMaterials);
+  EXPECT_TRUE(scene.hasMedia());
+
+  Scene direct;
+  SceneBuilder(direct).material(amber);
+  EXPECT_TRUE(direct.hasMedia());
+
+  // Materials put in without a builder are found when one continues.
+  Scene filled;
+  filled.materials = {glass, amber};
+  EXPECT_FALSE(filled.hasMedia());
+  { const SceneBuilder continued(filled); }
+  EXPECT_TRUE(filled.hasMedia());
+}
+
+TEST(Scene, FogIsAMediumAsItIsNow) {
+  Scene scene;
+  EXPECT_FALSE(scene.hasMedia());
+  scene.fog = Fog{Color(0.5), 0.1};
+  EXPECT_TRUE(scene.hasMedia()); // as the previewer's fog edit sets it
+  const Scene copy = scene;
+  EXPECT_TRUE(copy.hasMedia());
+  scene.fog.density = 0.0;
+  EXPECT_FALSE(scene.hasMedia());
+}
+
 } // namespace
 } // namespace prism

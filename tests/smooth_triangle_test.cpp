@@ -232,6 +232,7 @@ TEST(SmoothTriangle, TessellatedSphereShadesLikeAnalyticSphere) {
   mesh.ambient = analytic.ambient;
   mesh.background = analytic.background;
   mesh.materials = analytic.materials;
+  mesh.absorbingMaterials = analytic.absorbingMaterials;
   for (Triangle& t : mesh.shapes<Triangle>())
     t.material = 0;
 

@@ -20,19 +20,24 @@
 // numbers short. Geometry comes from small part files included many times:
 //   parts/branch.sc  an octagonal frustum (8 polygons), one per branch segment,
 //   parts/twigN.sc   three twig variants: a stalk and 10 to 14 folded leaves
-//                    (21 to 29 primitives, each its own shade of green),
+//                    (21 to 29 primitives), the leaves in the surface written
+//                    before the include: each variant's green or, on a third of
+//                    the last-generation branches, an autumn tint,
 // so the files stay small while the primitive count is large. A sphere covers
-// every joint between segments. The forest includes the one tree ten times,
-// each turned, scaled and placed differently.
+// every joint between segments. The bark is a marble texture whose veins are
+// dark furrows along the branches, a furrow every quarter of a branch's
+// radius. The forest includes the one tree ten times, each turned, scaled and
+// placed differently.
 //
 // The solid tree writes every segment as a `capped_cone` (the frustum itself,
 // round and closed, instead of eight polygons), a sphere of the segment's end
 // radius (plus 1%, so that no rim of a flat cap shows) at every bend and at
 // the tip of each last-generation branch, and at every fork a `blob` that
 // merges the branch ends into a smooth collar: one component inside the
-// parent's end and two along each child's axis. Both trees draw the same
-// random numbers in the same order: the solid one differs only in what it
-// writes.
+// parent's end and two along each child's axis. Its branches are written at
+// their size, so each branch group gives its bark texture a spacing of its
+// own (0.4 of its radius at its base). Both trees draw the same random
+// numbers in the same order: the solid one differs only in what it writes.
 //
 // Deterministic: a fixed seed and our own generator (splitmix64), no
 // std::*_distribution (whose output differs between standard libraries), and
@@ -55,8 +60,41 @@ namespace {
 // best-looking one; any other value gives another tree of the same kind.
 constexpr std::uint64_t kSeed = 4;
 constexpr double kPi = 3.14159265358979323846;
+// The spacing of the bark's furrows over a branch's radius: about eight
+// across a branch's visible side. In the unit frustum of parts/branch.sc,
+// stretched along each segment (2.5 times on the trunk, more on thinner
+// branches), the marble's swirl runs along the branch too; the solid
+// branches are written at their size, where the swirl is round and breaks
+// such fine furrows into speckles: wider ones there (by eye, the closest to
+// tree.sc's bark).
+constexpr double kBarkFurrows = 0.25;
+constexpr double kSolidBarkFurrows = 0.4;
 // Primitives in parts/twig1.sc, twig2.sc, twig3.sc.
 constexpr long kTwigPrims[3] = {25, 21, 29};
+
+// The leaves' colours, written before each twig's include (the twig parts
+// take the current surface for their leaves). Each variant has its green; a
+// last-generation branch that has turned gives all its twigs one autumn tint,
+// mixed 3:1 with each variant's green so the variants stay apart. Drawn from
+// a generator of their own (kTintSeed), so the branches draw the numbers
+// they drew before there were tints: the same tree.
+// Colours and not a `texture`: in the leaves' object space (parts/leaf.sc)
+// every leaf would show the same pattern, and each leaf's own map would make
+// a stored material of it (40,000 per tree, some 250 MB more for forest.sc);
+// pinned to the world (texture_space) the pattern would stay behind when the
+// tree is placed by a transform, as forest.sc places it.
+constexpr double kLeafGreens[3][3] = {{0.22, 0.5, 0.12}, {0.32, 0.56, 0.14}, {0.17, 0.42, 0.1}};
+struct Tint {
+  double share; // of the last-generation branches
+  double rgb[3];
+};
+constexpr Tint kTints[] = {
+    {0.12, {0.5, 0.58, 0.1}},   // yellow-green
+    {0.10, {0.88, 0.64, 0.1}},  // gold
+    {0.08, {0.84, 0.36, 0.06}}, // orange
+    {0.05, {0.64, 0.14, 0.05}}, // red
+};
+constexpr std::uint64_t kTintSeed = 0x7ea5;
 
 // splitmix64 (core/math/hash.h): tiny, fast, and the same on every platform.
 using Rng = prism::SplitMix64;
@@ -122,7 +160,7 @@ struct Params {
 class TreeWriter {
 public:
   TreeWriter(std::FILE* out, Params p, Style style = Style::Polygons)
-      : out_(out), p_(p), style_(style), rng_(kSeed) {}
+      : out_(out), p_(p), style_(style), rng_(kSeed), tintRng_(kTintSeed) {}
 
   // Writes the tree (roots and branches; no ground, no camera) as one group and
   // returns its number of primitives.
@@ -146,7 +184,11 @@ public:
                          "# Every push/pop below is a branch and everything growing from it; each\n"
                          "# twig of leaves is a group too.\n\n"
                          "push\n");
-    std::fprintf(out_, "surface 0.36 0.25 0.16  0.9 0 0  1 1   # bark: matte\n");
+    std::fprintf(out_, "surface 0.42 0.33 0.24  0.9 0 0  1 1   # bark: matte grey-brown\n");
+    // parts/branch.sc and the roots are of radius 1 in their object space,
+    // where the texture is evaluated: the furrows follow the branch's
+    // thickness by themselves.
+    barkTexture(kBarkFurrows, solid() ? "the roots' furrows" : "furrows along every branch");
     roots();
     branch(0, p_.trunkLength, p_.trunkRadius, Rot{}, 0, false);
     std::fprintf(out_, "pop\n");
@@ -162,7 +204,8 @@ public:
                    "# %ld primitives: %ld branch segments (capped cones), %ld joint, tip and root\n"
                    "# spheres, %ld fork blobs (%ld components in all),\n",
                    prims, segments_, joints_, forks_, forkComponents_);
-      std::fprintf(out_, "# %ld twigs (%ld primitives).\n", twigs_, twigPrims_);
+      std::fprintf(out_, "# %ld twigs (%ld primitives), %ld of them in autumn colours.\n", twigs_,
+                   twigPrims_, turnedTwigs_);
       return prims;
     }
     const long prims = segments_ * 8 + joints_ + twigPrims_;
@@ -173,7 +216,8 @@ public:
         out_,
         "# %ld primitives: %ld branch segments (8 polygons each), %ld joint and root spheres,\n",
         prims, segments_, joints_);
-    std::fprintf(out_, "# %ld twigs (%ld primitives).\n", twigs_, twigPrims_);
+    std::fprintf(out_, "# %ld twigs (%ld primitives), %ld of them in autumn colours.\n", twigs_,
+                 twigPrims_, turnedTwigs_);
     return prims;
   }
 
@@ -206,6 +250,13 @@ private:
     double r = radius;
     std::string pad(static_cast<std::size_t>(depth), ' ');
     std::fprintf(out_, "%spush # level %d\n", pad.c_str(), level);
+    if (level == p_.levels) tint_ = drawTint();
+    // The solid branches are written at their size: the furrows are scaled
+    // to each one's radius at its base (its forks, bends and tip share them).
+    if (solid()) {
+      std::fprintf(out_, "%s ", pad.c_str());
+      barkTexture(kSolidBarkFurrows * r, nullptr);
+    }
     for (int s = 0; s < segments; ++s) {
       if (solid() ? s > 0 || (level > 0 && !forked) : s > 0 || level > 0) {
         // Just inside the octagon's faces (inradius cos 22.5 = 0.924) so it
@@ -277,6 +328,15 @@ private:
     std::fprintf(out_, "%spop\n", pad.c_str());
   }
 
+  // Bark: the matte grey-brown of the current surface, dark in furrows that
+  // run along +y (the marble's veins, the planes x = const, swirled), one
+  // every `spacing` object units; with a comment if one is given.
+  void barkTexture(double spacing, const char* comment) {
+    std::fprintf(out_, "texture marble %.4g  0.08 0.06 0.04  0.9 0 0  1", spacing);
+    if (comment != nullptr) std::fprintf(out_, "   # %s", comment);
+    std::fputc('\n', out_);
+  }
+
   // A sub-branch turned `azimuth` degrees about the parent's axis and tilted
   // `tilt` degrees away from it.
   void child(int level, double len, double radius, const Rot& orient, int depth, double azimuth,
@@ -293,12 +353,27 @@ private:
     const double s = p_.twigLength * size * rng_.uniform(0.8, 1.15);
     const int variant = static_cast<int>(rng_.next() % 3);
     std::string pad(static_cast<std::size_t>(depth + 1), ' ');
+    const double* green = kLeafGreens[variant];
+    double rgb[3];
+    for (int c = 0; c < 3; ++c)
+      rgb[c] = tint_ == nullptr ? green[c] : 0.25 * green[c] + 0.75 * tint_->rgb[c];
     std::fprintf(out_,
-                 "%spush rotate 0 1 0 %.4g rotate 0 0 1 %.4g scale %.4g %.4g %.4g include "
-                 "twig%d.sc pop\n",
-                 pad.c_str(), azimuth, tilt, s, s, s, variant + 1);
+                 "%spush rotate 0 1 0 %.4g rotate 0 0 1 %.4g scale %.4g %.4g %.4g "
+                 "surface %.3g %.3g %.3g  0.9 0.08 0  12 1 include twig%d.sc pop\n",
+                 pad.c_str(), azimuth, tilt, s, s, s, rgb[0], rgb[1], rgb[2], variant + 1);
     ++twigs_;
+    turnedTwigs_ += tint_ != nullptr;
     twigPrims_ += kTwigPrims[variant];
+  }
+
+  // The tint of a last-generation branch's twigs, or null: still green.
+  const Tint* drawTint() {
+    double u = tintRng_.uniform();
+    for (const Tint& t : kTints) {
+      if (u < t.share) return &t;
+      u -= t.share;
+    }
+    return nullptr;
   }
 
   // A child at a fork: its turn and tilt (as child() takes them) and radius.
@@ -345,6 +420,9 @@ private:
   Params p_;
   Style style_;
   Rng rng_;
+  Rng tintRng_;
+  const Tint* tint_ = nullptr; // of the current last-generation branch
+  long turnedTwigs_ = 0;
   long segments_ = 0, joints_ = 0, twigs_ = 0, twigPrims_ = 0, forks_ = 0, forkComponents_ = 0;
 };
 
@@ -380,8 +458,9 @@ void writeTreeScene(std::FILE* out, long treePrims) {
                     "# Tests: many thousands of primitives rendered fast thanks to the push/pop\n"
                     "# hierarchy (each branch is a group holding its sub-branches; each twig of\n"
                     "# leaves is a group), shadows of the leaves on the ground and on each other,\n"
-                    "# and includes with transforms (parts/tree_body.sc includes parts/branch.sc,\n"
-                    "# parts/twig1-3.sc and parts/leaf.sc).\n\n");
+                    "# includes with transforms (parts/tree_body.sc includes parts/branch.sc,\n"
+                    "# parts/twig1-3.sc and parts/leaf.sc), and a texture in the object space of\n"
+                    "# an included part: the bark's furrows follow each segment's scale.\n\n");
   writeSetting(out, "0 3.5 28", "0 6.6 0", "40", "-25 12 30  180 200 260");
   std::fprintf(out, "# The tree: %ld primitives.\ninclude parts/tree_body.sc\n", treePrims);
 }

@@ -61,8 +61,7 @@ constexpr double kGrazingCos2 = 1e-12;
 Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCache cache)
     : scene_(scene), accel_(accel), maxDepth_(maxDepth) {
   if (cache == BlockerCache::On) lastBlocker_.resize(std::size_t(maxDepth) * scene.lights.size());
-  media_ = scene.fog.active() || std::any_of(scene.materials.begin(), scene.materials.end(),
-                                             [](const Material& m) { return m.absorbs(); });
+  media_ = scene.hasMedia();
   images_ = scene.images != nullptr;
   if (images_) cones_.resize(std::size_t(maxDepth) + 2);
 }

@@ -48,6 +48,10 @@ struct Scene {
 
   std::vector<Light> lights; // light i of the user interface is lights[i - 1]
   std::vector<Material> materials;
+  // Some material absorbs (Material::absorbs). SceneBuilder keeps it as it
+  // adds materials (every reader and generator adds them through it); code
+  // that fills `materials` itself sets it too.
+  bool absorbingMaterials = false;
   ShapeStorage<ShapeKinds> storage; // the primitives, a vector per kind: use shapes<Kind>()
   std::vector<Vec3> polygonVertices;
   std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices
@@ -80,6 +84,11 @@ struct Scene {
   template <class Kind> const std::vector<Kind>& shapes() const {
     return std::get<std::vector<Kind>>(storage.vectors);
   }
+  // Fog or an absorbing material: radiance changes along the segments of
+  // rays (core/render/media.h). Cheap, for a tracer of every tile; the fog
+  // is read as it is now (the previewer edits it live).
+  bool hasMedia() const { return fog.active() || absorbingMaterials; }
+
   std::size_t primitiveCount() const {
     return std::apply([](const auto&... v) { return (v.size() + ...); }, storage.vectors);
   }

@@ -10,6 +10,7 @@
 #include "core/scene/material_table.h"
 #include "core/scene/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -23,7 +24,11 @@ class SceneBuilder {
 public:
   // Adds to `scene`, which may already hold materials, groups and primitives
   // (a builder can continue what another started).
-  explicit SceneBuilder(Scene& scene) : scene_(scene), materials_(scene.materials) {}
+  explicit SceneBuilder(Scene& scene) : scene_(scene), materials_(scene.materials) {
+    scene_.absorbingMaterials =
+        scene_.absorbingMaterials || std::any_of(scene_.materials.begin(), scene_.materials.end(),
+                                                 [](const Material& m) { return m.absorbs(); });
+  }
   SceneBuilder(const SceneBuilder&) = delete;
   SceneBuilder& operator=(const SceneBuilder&) = delete;
 
@@ -32,7 +37,7 @@ public:
   // --- Materials
 
   // The index of `m` in the scene's one material table (see MaterialTable).
-  std::uint32_t material(const Material& m) { return materials_.intern(m); }
+  std::uint32_t material(const Material& m) { return intern(m); }
 
   // The current material of readers that have one (.sc `surface`, NFF `f`).
   // It is interned when a primitive first uses it, so a material no
@@ -45,7 +50,7 @@ public:
   // The index of the current material as the primitives added next use it:
   // a textured one with the object space composed into its texture's map.
   std::uint32_t currentMaterial() {
-    if (!currentIndex_) currentIndex_ = materials_.intern(inObjectSpace(current_));
+    if (!currentIndex_) currentIndex_ = intern(inObjectSpace(current_));
     return *currentIndex_;
   }
   // The world-to-object map (x -> linear x + offset) of the primitives added
@@ -162,6 +167,12 @@ public:
   std::uint32_t addFile(std::string name);
 
 private:
+  // Every material enters here: the table, and Scene::absorbingMaterials.
+  std::uint32_t intern(const Material& m) {
+    if (m.absorbs()) scene_.absorbingMaterials = true;
+    return materials_.intern(m);
+  }
+
   // `m` with the object space composed in after its texture's own map,
   // unless that map is already from the world.
   Material inObjectSpace(Material m) const {

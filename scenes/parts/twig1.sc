@@ -1,10 +1,9 @@
 # Twig variant 1: a thin brown stalk (an ellipsoid) along +y, length 1, with
 # 11 leaves (parts/leaf.sc) in a spiral 137.5 degrees apart and one at the tip.
-# 25 primitives. Sets its own materials inside its group.
+# 25 primitives. The leaves take the surface current where the twig is
+# included (tools/tree_gen.cpp gives each twig its colour: this variant's
+# green (0.22 0.5 0.12) or an autumn tint); the stalk sets its own.
 push
-  surface 0.3 0.22 0.12  0.9 0 0  1 1
-  push translate 0 0.5 0 scale 0.018 0.5 0.018 sphere 0 0 0 1 pop
-  surface 0.22 0.5 0.12  0.9 0.08 0  12 1
   push translate 0 0.12 0 rotate 0 1 0 0 rotate 0 0 1 62 scale 0.255 0.255 0.255 include leaf.sc pop
   push translate 0 0.205 0 rotate 0 1 0 137.5 rotate 0 0 1 60.3 scale 0.273 0.273 0.273 include leaf.sc pop
   push translate 0 0.29 0 rotate 0 1 0 275 rotate 0 0 1 58.6 scale 0.291 0.291 0.291 include leaf.sc pop
@@ -17,4 +16,6 @@ push
   push translate 0 0.885 0 rotate 0 1 0 157.5 rotate 0 0 1 46.7 scale 0.273 0.273 0.273 include leaf.sc pop
   push translate 0 0.97 0 rotate 0 1 0 295 rotate 0 0 1 45 scale 0.255 0.255 0.255 include leaf.sc pop
   push translate 0 1 0 rotate 0 1 0 30 rotate 1 0 0 -10 scale 0.3 0.3 0.3 include leaf.sc pop
+  surface 0.3 0.22 0.12  0.9 0 0  1 1
+  push translate 0 0.5 0 scale 0.018 0.5 0.018 sphere 0 0 0 1 pop
 pop

@@ -21,10 +21,8 @@ void write(TextOut& text, const Blob& b, int depth) {
     blobCommand(text, b, depth);
     return;
   }
-  text.line(depth) << "push\n";
-  text.placed(b.frame.objectToWorld, b.frame.objectToWorldOffset, depth + 1);
-  blobCommand(text, b, depth + 1);
-  text.line(depth) << "pop\n";
+  text.inFrame(b.frame.objectToWorld, b.frame.objectToWorldOffset, depth,
+               [&](int inside) { blobCommand(text, b, inside); });
 }
 
 } // namespace prism::sc

@@ -6,14 +6,13 @@
 namespace prism::sc {
 
 void write(TextOut& text, const Box& b, int depth) {
-  if (isWorldAligned(b)) {
-    text.line(depth) << "box " << vec(b.lo) << "  " << vec(b.hi) << "\n";
-    return;
-  }
-  text.line(depth) << "push\n";
-  text.placed(b.frame.objectToWorld, b.frame.objectToWorldOffset, depth + 1);
-  text.line(depth + 1) << "box " << vec(b.lo) << "  " << vec(b.hi) << "\n";
-  text.line(depth) << "pop\n";
+  const auto command = [&](int at) {
+    text.line(at) << "box " << vec(b.lo) << "  " << vec(b.hi) << "\n";
+  };
+  if (isWorldAligned(b))
+    command(depth);
+  else
+    text.inFrame(b.frame.objectToWorld, b.frame.objectToWorldOffset, depth, command);
 }
 
 } // namespace prism::sc

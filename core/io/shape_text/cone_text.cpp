@@ -22,15 +22,14 @@ void writeCone(TextOut& text, const Cone& c, int depth, const char* keyword) {
     }
     return;
   }
-  text.line(depth) << "push\n";
-  text.placed(m, c.objectToWorldOffset, depth + 1);
-  if (cylinder) {
-    text.line(depth + 1) << keyword << " 0 0 0  0 0 1 " << num(c.baseRadius) << "\n";
-  } else {
-    text.line(depth + 1) << keyword << " 0 0 0 " << num(c.baseRadius) << "  0 0 1 "
-                         << num(c.apexRadius) << "\n";
-  }
-  text.line(depth) << "pop\n";
+  text.inFrame(m, c.objectToWorldOffset, depth, [&](int inside) {
+    if (cylinder) {
+      text.line(inside) << keyword << " 0 0 0  0 0 1 " << num(c.baseRadius) << "\n";
+    } else {
+      text.line(inside) << keyword << " 0 0 0 " << num(c.baseRadius) << "  0 0 1 "
+                        << num(c.apexRadius) << "\n";
+    }
+  });
 }
 
 } // namespace

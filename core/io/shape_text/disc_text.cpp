@@ -13,10 +13,9 @@ void write(TextOut& text, const Disc& d, int depth) {
                      << "\n";
     return;
   }
-  text.line(depth) << "push\n";
-  text.placed(m, d.frame.objectToWorldOffset, depth + 1);
-  text.line(depth + 1) << "disc 0 0 0  0 0 1 " << num(d.radius) << "\n";
-  text.line(depth) << "pop\n";
+  text.inFrame(m, d.frame.objectToWorldOffset, depth, [&](int inside) {
+    text.line(inside) << "disc 0 0 0  0 0 1 " << num(d.radius) << "\n";
+  });
 }
 
 } // namespace prism::sc

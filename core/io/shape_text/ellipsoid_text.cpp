@@ -6,10 +6,8 @@
 namespace prism::sc {
 
 void write(TextOut& text, const Ellipsoid& e, int depth) {
-  text.line(depth) << "push\n";
-  text.placed(e.objectToWorld, e.center, depth + 1);
-  text.line(depth + 1) << "sphere 0 0 0 1\n";
-  text.line(depth) << "pop\n";
+  text.inFrame(e.objectToWorld, e.center, depth,
+               [&](int inside) { text.line(inside) << "sphere 0 0 0 1\n"; });
 }
 
 } // namespace prism::sc

@@ -20,10 +20,8 @@ void write(TextOut& text, const Quadric& q, int depth) {
     command(text, q, depth);
     return;
   }
-  text.line(depth) << "push\n";
-  text.placed(q.frame.objectToWorld, q.frame.objectToWorldOffset, depth + 1);
-  command(text, q, depth + 1);
-  text.line(depth) << "pop\n";
+  text.inFrame(q.frame.objectToWorld, q.frame.objectToWorldOffset, depth,
+               [&](int inside) { command(text, q, inside); });
 }
 
 } // namespace prism::sc

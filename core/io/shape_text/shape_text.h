@@ -29,11 +29,21 @@ public:
   // the square of the depth.
   std::ostream& line(int depth);
 
-  // translate, rotate, scale, rotate: the map x -> offset + a x, for an
-  // object written in its own frame.
-  void placed(const Mat3& a, const Vec3& offset, int depth);
+  // An object written in its own frame, mapped to the world by
+  // x -> offset + a x: push, the placing transforms, what `command(depth + 1)`
+  // writes, pop. Every kind that writes such a block writes it with this.
+  template <class Command>
+  void inFrame(const Mat3& a, const Vec3& offset, int depth, Command&& command) {
+    line(depth) << "push\n";
+    placed(a, offset, depth + 1);
+    command(depth + 1);
+    line(depth) << "pop\n";
+  }
 
 private:
+  // translate, rotate, scale, rotate: the map x -> offset + a x.
+  void placed(const Mat3& a, const Vec3& offset, int depth);
+
   static constexpr int kMaxIndent = 16;
   std::ostream& out_;
   const Scene& scene_;

@@ -13,10 +13,9 @@ void write(TextOut& text, const Torus& t, int depth) {
                      << num(t.major * unit) << " " << num(t.minor * unit) << "\n";
     return;
   }
-  text.line(depth) << "push\n";
-  text.placed(m, t.objectToWorldOffset, depth + 1);
-  text.line(depth + 1) << "torus 0 0 0  0 0 1  " << num(t.major) << " " << num(t.minor) << "\n";
-  text.line(depth) << "pop\n";
+  text.inFrame(m, t.objectToWorldOffset, depth, [&](int inside) {
+    text.line(inside) << "torus 0 0 0  0 0 1  " << num(t.major) << " " << num(t.minor) << "\n";
+  });
 }
 
 } // namespace prism::sc

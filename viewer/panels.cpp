@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 namespace prism {
 
@@ -175,15 +176,22 @@ void fogSection(ViewController& c, WindowState& state) {
   if (changed) edit(c, state, [&] { c.apply(FogEdit{fog}); });
 }
 
+// A value for a float widget: a double past the float range would be
+// undefined behaviour to convert (a scene may hold 1e300).
+float toFloat(double value) {
+  const double limit = double(std::numeric_limits<float>::max());
+  return float(std::clamp(value, -limit, limit));
+}
+
 // A colour picked as floats: the channels the user did not change keep their
 // exact value (a float would round them). Never negative (a typed NaN
 // becomes 0 too: std::max keeps its first argument).
 bool pickColour(const char* label, Color& colour) {
-  float rgb[3] = {float(colour.r), float(colour.g), float(colour.b)};
+  float rgb[3] = {toFloat(colour.r), toFloat(colour.g), toFloat(colour.b)};
   if (!ui::colourEdit(label, rgb)) return false;
   bool changed = false;
   for (int i = 0; i < 3; ++i) {
-    if (rgb[i] == float(colour[i])) continue;
+    if (rgb[i] == toFloat(colour[i])) continue;
     colour[i] = std::max(0.0, double(rgb[i]));
     changed = true;
   }
@@ -207,11 +215,11 @@ void texturesSection(ViewController& c, WindowState& state) {
     TextureValues values = c.edits().textureOver(file, i);
     bool changed = false;
     // A slider a decade either side of the file's scale; Ctrl+click types any.
-    const float fileScale = float(texture.values().scale);
-    float scale = float(values.scale);
+    const float fileScale = toFloat(texture.values().scale);
+    float scale = toFloat(values.scale);
     if (ui::sliderFloat("scale", &scale, 0.1f * fileScale, 10.0f * fileScale, "%.4g",
                         ImGuiSliderFlags_Logarithmic) &&
-        scale > 0.0f && std::isfinite(scale) && scale != float(values.scale)) {
+        scale > 0.0f && std::isfinite(scale) && scale != toFloat(values.scale)) {
       values.scale = double(scale);
       changed = true;
     }

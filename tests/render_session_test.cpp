@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -198,6 +199,62 @@ TEST(RenderSession, FogEditsRenderAsTheFileSaysAndDensityZeroIsTheFogFreePicture
   session.apply({.fog = Fog{Color(0.5, 0.6, 0.7), 0.0}});
   EXPECT_EQ(session.progress().restarts, 2u);
   expectSameFilm(session.waitForResult(), clearFilm);
+}
+
+// Two textures: one `texture` line over two spheres in spaces of their own
+// (two materials, one group) and another on the floor. The scale and the
+// colours of the first are written in, so that an edit's picture can be
+// compared with the file that says the same.
+std::string texturedRoom(double scale, const Color& colour, const Color& base) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "eye 0 2 8  lookat 0 0.5 0  fov 45\n"
+          "ambient 0.1 0.1 0.1\n"
+          "light 3 5 4  30 30 30\n"
+       << "surface " << base.r << " " << base.g << " " << base.b << "  0.9 0.1 0  20 1\n"
+       << "texture checker " << scale << "  " << colour.r << " " << colour.g << " " << colour.b
+       << "  0.9 0.1 0  20\n"
+       << "push\n  translate -1.2 0.6 0\n  sphere 0 0 0 0.6\npop\n"
+          "push\n  translate 1.2 0.6 0\n  rotate 0 1 0 30\n  sphere 0 0 0 0.6\npop\n"
+          "surface 0.3 0.5 0.7  0.9 0 0  1 1\n"
+          "texture stripes 0.4  0.9 0.9 0.8  0.9 0 0  1\n"
+          "polygon 4  -5 0 -5  -5 0 5  5 0 5  5 0 -5\n";
+  return text.str();
+}
+
+// A texture edit restarts from pass 1 and changes every material of its
+// group: the picture is the file's with the edited values written in. The
+// file's values put back give the file's picture, bit for bit.
+TEST(RenderSession, TextureEditsRenderAsTheFileSaysAndTheFilesValuesGiveItsPicture) {
+  const TextureValues file{0.5, Color(0.1, 0.2, 0.3), Color(0.8, 0.7, 0.6)};
+  const TextureValues edited{0.3, Color(0.9, 0.2, 0.1), Color(0.2, 0.6, 0.3)};
+  const Scene scene = parseScene(texturedRoom(file.scale, file.color, file.base), "textured.sc");
+  const Scene written =
+      parseScene(texturedRoom(edited.scale, edited.color, edited.base), "edited.sc");
+  const RenderSettings s = smallSettings();
+  const RenderResult fileFilm = renderDirect(scene, s);
+  const RenderResult writtenFilm = renderDirect(written, s);
+  ASSERT_FALSE(writtenFilm.film.radiance == fileFilm.film.radiance); // the edit shows
+
+  RenderSession session(scene, s);
+  ASSERT_EQ(session.textureGroups().size(), 2u);
+  EXPECT_EQ(session.textureGroups()[0].materials.size(), 2u); // the two spheres' spaces
+  EXPECT_EQ(session.textureGroups()[1].kind, TextureKind::Stripes);
+  session.waitForResult(); // pass 1 complete: a texture edit must not keep it
+  session.apply({.textures = {{0, edited}}});
+  EXPECT_EQ(session.progress().restarts, 1u);
+  expectSameFilm(session.waitForResult(), writtenFilm);
+  for (const std::uint32_t m : session.textureGroups()[0].materials)
+    EXPECT_EQ(textureValuesOf(session.scene().materials[m]), edited);
+
+  // A texture the scene does not have: refused before anything changes.
+  EXPECT_THROW(session.apply({.textures = {{0, file}, {2, file}}}), std::out_of_range);
+  EXPECT_EQ(session.progress().restarts, 1u);
+  EXPECT_TRUE(session.finished());
+
+  session.apply({.textures = {{0, file}}});
+  EXPECT_EQ(session.progress().restarts, 2u);
+  expectSameFilm(session.waitForResult(), fileFilm);
 }
 
 TEST(RenderSession, OneApplyChangesSeveralValuesWithOneRestart) {

@@ -12,6 +12,7 @@
 #include "core/render/ray_tree.h"
 #include "core/render/tracer.h"
 #include "core/scene/material_blend.h"
+#include "core/scene/texture_groups.h"
 #include "core/texture/noise.h"
 #include "core/texture/pattern.h"
 #include "tests/test_expect.h"
@@ -204,6 +205,69 @@ TEST(Texture, Errors) {
             "t.sc:1:9: error: texture: expected a kind (checker, stripes, gradient, noise, "
             "marble, wood) but found 'plaid'\n"
             "t.sc:2:14: error: sphere: negative radius '-1'");
+}
+
+// The previewer edits "a texture" (core/scene/texture_groups.h): the
+// materials one `texture` line made, one per object space, are one group;
+// a line alike under a surface alike joins it; one coefficient apart is
+// another group; untextured materials are in none.
+TEST(Texture, GroupsGatherWhatOneTextureLineMadeInEveryObjectSpace) {
+  const Scene scene = parseScene(R"(
+surface 0.8 0.6 0.4  1 0 0  1 1
+texture checker 2  0.1 0.2 0.3  0.5 0 0  8
+sphere 0 0 0 1
+push
+  translate 3 0 0
+  sphere 0 0 0 1
+pop
+push
+  rotate 0 1 0 30
+  sphere 0 0 0 1
+pop
+surface 0.8 0.6 0.4  1 0 0  1 1
+sphere 0 9 0 1
+texture marble 1  1 1 1  1 0 0  1
+push
+  translate 0 -5 0
+  sphere 0 0 0 1
+pop
+surface 0.8 0.6 0.4  1 0 0  1 1
+texture checker 2  0.1 0.2 0.3  0.5 0 0  8
+push
+  translate 0 5 0
+  sphere 0 0 0 1
+pop
+texture checker 2  0.1 0.2 0.3  0.5 0 0  9
+sphere 0 0 -5 1
+)",
+                                 "g.sc");
+  const auto materialIndex = [&](std::size_t sphere) {
+    return scene.shapes<Sphere>().at(sphere).material;
+  };
+  // Three object spaces of the first line, and the fourth of the line alike.
+  ASSERT_EQ(scene.materials.size(), 7u);
+  const std::vector<TextureGroup> groups = textureGroups(scene);
+  ASSERT_EQ(groups.size(), 3u);
+  EXPECT_EQ(groups[0].kind, TextureKind::Checker);
+  EXPECT_EQ(groups[0].materials, (std::vector<std::uint32_t>{materialIndex(0), materialIndex(1),
+                                                             materialIndex(2), materialIndex(5)}));
+  EXPECT_EQ(groups[1].kind, TextureKind::Marble);
+  EXPECT_EQ(groups[1].materials, std::vector<std::uint32_t>{materialIndex(4)});
+  EXPECT_EQ(groups[2].kind, TextureKind::Checker);
+  EXPECT_EQ(groups[2].materials, std::vector<std::uint32_t>{materialIndex(6)});
+  EXPECT_FALSE(scene.materials[materialIndex(3)].texture.active());
+
+  // The values an edit changes, and nothing else: the map stays.
+  Material m = scene.materials[materialIndex(1)];
+  EXPECT_EQ(textureValuesOf(m), (TextureValues{2.0, Color(0.1, 0.2, 0.3), Color(0.8, 0.6, 0.4)}));
+  const TextureValues edited{0.25, Color(1, 0.5, 0), Color(0, 0, 1)};
+  setTextureValues(m, edited);
+  EXPECT_EQ(textureValuesOf(m), edited);
+  EXPECT_EQ(m.texture.offset, scene.materials[materialIndex(1)].texture.offset);
+  EXPECT_NE(m.texture.offset, Vec3(0.0)); // translated: the check above could fail
+  // The identity leaves out the map and the edited values, not the rest.
+  EXPECT_EQ(textureIdentity(m), textureIdentity(scene.materials[materialIndex(0)]));
+  EXPECT_FALSE(textureIdentity(m) == textureIdentity(scene.materials[materialIndex(6)]));
 }
 
 // A scene without textures has untextured materials, shared across

@@ -14,6 +14,7 @@
 
 #include "test_pictures.h"
 
+#include <sstream>
 #include <thread>
 
 namespace prism::test {
@@ -727,6 +728,190 @@ TEST(ViewControllerFog, AReloadKeepsTheFogEdit) {
   c.apply(RevertToFile{});
   EXPECT_TRUE(sameFog(c.scene().fog, Fog{Color(0.1), 0.02}));
   updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// ---------------------------------------------------------------------------
+// Textures: a group of materials (one `texture` line in every object space)
+// edited as one value
+
+// A scene with a marble texture over two spheres in spaces of their own, a
+// checker floor, and `lights` lights; with `noiseFirst`, a noise-textured
+// sphere before them (which numbers them 2 and 3). The marble's and the
+// checker's values are written in; `marbleKdr` is one value no edit changes.
+struct TexturedFile {
+  TextureValues marble{0.5, Color(0.2, 0.1, 0.3), Color(1, 0.5, 0.2)};
+  TextureValues checker{1.0, Color(0.9, 0.9, 0.9), Color(0.3, 0.6, 0.9)};
+  double marbleKdr = 0.8;
+  bool noiseFirst = false;
+  int lights = 1;
+
+  std::string text() const {
+    std::ostringstream t;
+    t.precision(17);
+    const auto rgb = [&](const Color& c) { t << " " << c.r << " " << c.g << " " << c.b << " "; };
+    t << "eye 0 1 5\nlookat 0 0 0\nresolution 40 30\n";
+    for (int i = 0; i < lights; ++i)
+      t << "light " << 2 - 4 * i << " 3 4  30 30 30\n";
+    if (noiseFirst)
+      t << "surface 0.1 0.1 0.5  1 0 0  1 1\ntexture noise 0.3  1 1 1  1 0 0  1\n"
+           "sphere 0 1.2 -1 0.4\n";
+    t << "surface";
+    rgb(marble.base);
+    t << " 0.8 0.2 0  20 1\ntexture marble " << marble.scale;
+    rgb(marble.color);
+    t << " " << marbleKdr << " 0.2 0  20\n"
+      << "push\n  translate -1 0 0\n  sphere 0 0 0 0.8\npop\n"
+         "push\n  translate 1 0 0\n  sphere 0 0 0 0.8\npop\n"
+      << "surface";
+    rgb(checker.base);
+    t << " 1 0 0  1 1\ntexture checker " << checker.scale;
+    rgb(checker.color);
+    t << " 1 0 0  1\npolygon 4 -3 -1 -3  -3 -1 3  3 -1 3  3 -1 -3\n";
+    return t.str();
+  }
+};
+
+// The values the scene shows for texture `index` (every member alike).
+TextureValues shownTexture(const ViewController& c, std::size_t index) {
+  const TextureGroup& group = c.fileValues().textures.at(index).group;
+  const TextureValues values = textureValuesOf(c.scene().materials[group.materials.front()]);
+  for (const std::uint32_t m : group.materials)
+    EXPECT_EQ(textureValuesOf(c.scene().materials[m]), values);
+  return values;
+}
+
+// Each texture edit is one undo step that restarts the render and shows the
+// file with the edited values written in; undo, reset and revert put the
+// file's values back, and with them the file's picture, bit for bit.
+TEST(ViewControllerTexture, EditsUndoRedoResetAndRevert) {
+  ScratchDir dir;
+  const TexturedFile file;
+  writeFile(dir / "main.sc", file.text());
+  const Scene scene = loadScene(dir / "main.sc");
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  ASSERT_EQ(c.fileValues().textures.size(), 2u);
+  const FileTexture& marble = c.fileValues().textures[0];
+  EXPECT_EQ(marble.group.kind, TextureKind::Marble);
+  EXPECT_EQ(marble.group.materials.size(), 2u); // two object spaces, one texture
+  EXPECT_EQ(marble.place, "sphere #0 (main.sc:9)");
+  EXPECT_EQ(marble.values(), file.marble);
+  EXPECT_EQ(c.fileValues().textures[1].place, "polygon #0 (main.sc:17)");
+  c.update();
+  std::uint64_t restarts = c.progress().restarts;
+
+  const TextureValues veins{0.25, Color(0.05, 0.3, 0.1), Color(0.9, 0.9, 0.8)};
+  const TextureValues tiles{2.5, Color(0.1, 0.1, 0.1), Color(0.8, 0.2, 0.2)};
+  c.apply(TextureEdit{0, veins});
+  expectRestarted(c, restarts);
+  c.apply(TextureEdit{1, tiles});
+  expectRestarted(c, restarts);
+  EXPECT_EQ(c.edits().names(), (std::vector<std::string>{"texture 1", "texture 2"}));
+  EXPECT_EQ(shownTexture(c, 0), veins);
+  TexturedFile written = file;
+  written.marble = veins;
+  written.checker = tiles;
+  writeFile(dir / "written.sc", written.text());
+  const std::vector<Rgb> original = renderOf(scene, options);
+  const std::vector<Rgb> edited = finishedImage(c);
+  EXPECT_EQ(edited, renderOf(loadScene(dir / "written.sc"), options));
+  EXPECT_NE(edited, original);
+  EXPECT_THROW(c.apply(TextureEdit{2, veins}), std::out_of_range);
+
+  ASSERT_TRUE(c.undo());
+  expectRestarted(c, restarts);
+  EXPECT_EQ(shownTexture(c, 1), file.checker);
+  EXPECT_EQ(shownTexture(c, 0), veins);
+  ASSERT_TRUE(c.undo());
+  EXPECT_EQ(shownTexture(c, 0), file.marble);
+  EXPECT_FALSE(c.canUndo());
+  EXPECT_EQ(finishedImage(c), original);
+  ASSERT_TRUE(c.redo());
+  ASSERT_TRUE(c.redo());
+  EXPECT_EQ(shownTexture(c, 1), tiles);
+
+  c.apply(ResetTexture{0});
+  EXPECT_EQ(shownTexture(c, 0), file.marble);
+  EXPECT_EQ(shownTexture(c, 1), tiles);
+  c.apply(RevertToFile{});
+  EXPECT_EQ(shownTexture(c, 1), file.checker);
+  EXPECT_FALSE(c.edits().sceneEdited());
+  EXPECT_EQ(finishedImage(c), original);
+  ASSERT_TRUE(c.undo());
+  EXPECT_EQ(shownTexture(c, 1), tiles);
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// A reload keeps a texture's edit on that texture wherever the file now puts
+// it (another texture before it renumbers it), over the file's new colours;
+// a texture the file changed in more than an edit holds is another one: its
+// edit is dropped.
+TEST(ViewControllerTexture, AReloadKeepsAnEditOnItsTextureWhereverItIsAndDropsAGoneOne) {
+  ScratchDir dir;
+  TexturedFile file;
+  writeFile(dir / "main.sc", file.text());
+  const Scene scene = loadScene(dir / "main.sc");
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  const TextureValues veins{0.25, Color(0.05, 0.3, 0.1), Color(0.9, 0.9, 0.8)};
+  const TextureValues tiles{2.5, Color(0.1, 0.1, 0.1), Color(0.8, 0.2, 0.2)};
+  c.apply(TextureEdit{0, veins});
+  c.apply(TextureEdit{1, tiles});
+
+  file.noiseFirst = true;
+  file.checker.color = Color(0.5, 0.5, 0.0); // the user's edit stays over it
+  file.lights = 2;
+  writeFile(dir / "main.sc", file.text());
+  reloadUntil(c, 2);
+  ASSERT_EQ(c.fileValues().textures.size(), 3u);
+  EXPECT_EQ(c.keptEdits().kept, (std::vector<std::string>{"texture 2", "texture 3"}));
+  EXPECT_TRUE(c.keptEdits().dropped.empty());
+  EXPECT_EQ(shownTexture(c, 1), veins);
+  EXPECT_EQ(shownTexture(c, 2), tiles);
+  TexturedFile expected = file;
+  expected.marble = veins;
+  expected.checker = tiles;
+  writeFile(dir / "expected.sc", expected.text());
+  EXPECT_EQ(finishedImage(c), renderOf(loadScene(dir / "expected.sc"), options));
+
+  file.marbleKdr = 0.5;
+  file.lights = 1;
+  writeFile(dir / "main.sc", file.text());
+  reloadUntil(c, 1);
+  EXPECT_EQ(c.keptEdits().kept, std::vector<std::string>{"texture 3"});
+  EXPECT_EQ(c.keptEdits().dropped, std::vector<std::string>{"texture 2"});
+  EXPECT_EQ(shownTexture(c, 1), file.marble);
+  EXPECT_EQ(shownTexture(c, 2), tiles);
+  // The dropped edit is gone from the history: one undo leads to the file.
+  ASSERT_TRUE(c.undo());
+  EXPECT_FALSE(c.canUndo());
+  EXPECT_EQ(shownTexture(c, 2), file.checker);
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// Save scene as writes the edited texture (the `surface` colour with it) in
+// every object space: the saved file renders the window's picture.
+TEST(ViewControllerTexture, SaveSceneAsWritesTheEditedTexture) {
+  ScratchDir dir;
+  writeFile(dir / "main.sc", TexturedFile{}.text());
+  const Scene scene = loadScene(dir / "main.sc");
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  const TextureValues veins{0.25, Color(0.05, 0.3, 0.1), Color(0.9, 0.9, 0.8)};
+  c.apply(TextureEdit{0, veins});
+  c.saveSceneAs((dir / "view.sc").string());
+  updateUntil(c, [&] { return !c.sceneSaveBusy(); });
+  ASSERT_EQ(c.sceneSaveState(), ViewController::SceneSaveState::Saved) << c.sceneSaveMessage();
+  EXPECT_NE(slurp(dir / "view.sc").find("with edits of: texture 1."), std::string::npos);
+  const Scene back = loadScene(dir / "view.sc");
+  // (The writer puts the top level's floor first: the marble is texture 2 there.)
+  const std::vector<TextureGroup> groups = textureGroups(back);
+  ASSERT_EQ(groups.size(), 2u);
+  ASSERT_EQ(groups[1].kind, TextureKind::Marble);
+  ASSERT_EQ(groups[1].materials.size(), 2u);
+  for (const std::uint32_t m : groups[1].materials)
+    EXPECT_EQ(textureValuesOf(back.materials[m]), veins);
+  EXPECT_EQ(renderOf(back, options), finishedImage(c));
 }
 
 // ---------------------------------------------------------------------------

@@ -200,6 +200,30 @@ TEST(ViewE2E, FogFromAScriptSavesWhatRenderOfTheFoggedFileWrites) {
       "a.sc");
 }
 
+// The script's `texture` edits every object space of a texture as writing
+// its values into the `texture` and `surface` lines does: Save writes what
+// `prism render` writes of the file with those values.
+TEST(ViewE2E, TextureFromAScriptSavesWhatRenderOfTheEditedFileWrites) {
+  ScratchDir dir;
+  const auto textured = [](const std::string& surface, const std::string& texture) {
+    return "eye 0 1.5 6\nlookat 0 0.3 0\nfov 40\nresolution 80 60\n"
+           "light 3 4 4  40 38 34\n"
+           "surface " +
+           surface + "  0.8 0.2 0  40 1\ntexture marble " + texture +
+           "  0.8 0.2 0  40\n"
+           "push\n  translate -0.8 0.3 0\n  sphere 0 0 0 0.8\npop\n"
+           "push\n  translate 1 0.2 -0.5\n  sphere 0 0 0 0.7\npop\n"
+           "surface 0.4 0.6 0.8  0.9 0.1 0  10 1\n"
+           "polygon 4  -6 -0.5 -6  -6 -0.5 6  6 -0.5 6  6 -0.5 -6\n";
+  };
+  writeFile(dir / "a.sc", textured("0.9 0.85 0.8", "0.5  0.3 0.2 0.3"));
+  writeFile(dir / "b.sc", textured("0.2 0.3 0.6", "0.25  0.9 0.8 0.1"));
+  expectSaveIsTheEditedRender(
+      dir.path(),
+      "wait pass1\ntexture 1 0.25 0.9 0.8 0.1 0.2 0.3 0.6\nwait done\nsave saved.tiff\nquit\n",
+      "b.sc", "a.sc");
+}
+
 // The script's `no-aa on` switches antialiasing off as `prism render --no-aa`
 // does: Save writes its picture, which is not the antialiased one.
 TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {

@@ -116,14 +116,15 @@ std::string imageDescription(const fs::path& path) {
   return in->spec().get_string_attribute("ImageDescription");
 }
 
-// The scene: two lights, a sphere on a floor, small enough to render in a
-// fraction of a second.
+// The scene: two lights, a sphere on a checker floor (so that the Textures
+// section shows), small enough to render in a fraction of a second.
 std::string sceneText(int lights) {
   std::string text = "eye 0 1.5 6\nlookat 0 0.3 0\nfov 40\nresolution 320 240\n";
   for (int i = 0; i < lights; ++i)
     text += "light " + std::to_string(3 - 3 * i) + " 4 4  30 28 26\n";
   return text + "surface 0.9 0.3 0.2 0.8 0.3 0 40 1\nsphere -0.8 0.3 0 0.8\n"
                 "surface 0.4 0.6 0.8 0.9 0.1 0 10 1\n"
+                "texture checker 1  0.2 0.3 0.4  0.9 0.1 0  10\n"
                 "polygon 4 -6 -0.5 -6 -6 -0.5 6 6 -0.5 6 6 -0.5 -6\n";
 }
 
@@ -230,8 +231,8 @@ public:
     const std::string b = std::to_string(button);
     for (int attempt = 0; attempt < 5; ++attempt) {
       const auto [x, y] = at(name, fx);
-      if (x < 0 || !xdotool(display_, "mousemove " + std::to_string(x) + " " +
-                                          std::to_string(y) + " mousedown " + b))
+      if (x < 0 || !xdotool(display_, "mousemove " + std::to_string(x) + " " + std::to_string(y) +
+                                          " mousedown " + b))
         return std::nullopt;
       if (waitFor([&] { return active(name); }, 4.0)) return std::pair{x, y};
       if (!xdotool(display_, "mouseup " + b)) return std::nullopt;
@@ -556,6 +557,13 @@ TEST_F(ViewInput, EveryOtherControlByMouse) {
   changesOnDrag("Lights/light 2/intensity");
   changesOnDrag("Fog/fog colour");
   changesOnDrag("Fog/fog density");
+  // A texture: its scale, both colours, and back to the file's values.
+  const std::string tiles = app_.value("Textures/texture 1/texture colour");
+  changesOnClick("Textures/texture 1/scale", 0.9);
+  changesOnDrag("Textures/texture 1/texture colour");
+  changesOnDrag("Textures/texture 1/surface colour");
+  ASSERT_TRUE(app_.click("Textures/texture 1/reset"));
+  EXPECT_TRUE(app_.waitForValue("Textures/texture 1/texture colour", tiles));
   changesOnDrag("Camera/lookat");
   // The pixel's ray tree closes by its button, the key help by its own.
   ASSERT_TRUE(xdotool(x_.display(), "mousemove 100 380 click 1"));

@@ -135,6 +135,38 @@ TEST(ViewScript, ParsesFogAndReportsItsErrors) {
   EXPECT_EQ(errors[4].format(), "s.txt:5:15: error: fog: expected R G B DENSITY, got 5 arguments");
 }
 
+TEST(ViewScript, ParsesTextureAndReportsItsErrors) {
+  const auto a = parseScript("texture 2 0.5 0.1 0.2 0.3\ntexture 1 2 1 1 1  0.5 0.25 0\n", "s.txt");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].op, ScriptOp::Texture);
+  EXPECT_EQ(a[0].index, 2);
+  EXPECT_EQ(a[0].values, std::vector<double>({0.5, 0.1, 0.2, 0.3}));
+  EXPECT_EQ(a[1].index, 1);
+  EXPECT_EQ(a[1].values, std::vector<double>({2, 1, 1, 1, 0.5, 0.25, 0}));
+  const auto errors = errorsOf("texture 1 0.5 1 1\n"
+                               "texture 0 1 1 1 1\n"
+                               "texture 1.5 1 1 1 1\n"
+                               "texture 1 0 1 1 1\n"
+                               "texture 1 -2 1 1 1\n"
+                               "texture 1 1 1 -1 1\n"
+                               "texture 1 1 1 1 1 0.5 0.5 x\n"
+                               "texture 1 1 1 1 1 0.5\n"
+                               "texture 1 1 1 1 1 1 1 1 1\n");
+  ASSERT_EQ(errors.size(), 9u);
+  EXPECT_EQ(errors[0].format(),
+            "s.txt:1:1: error: texture: expected N SCALE R G B [R0 G0 B0], got 4 arguments");
+  EXPECT_EQ(errors[1].format(), "s.txt:2:9: error: texture number must be in [1, 1e+06], got 0");
+  EXPECT_EQ(errors[2].format(), "s.txt:3:9: error: texture number: expected an integer, got 1.5");
+  EXPECT_EQ(errors[3].format(), "s.txt:4:11: error: texture scale must be positive, got 0");
+  EXPECT_EQ(errors[4].format(), "s.txt:5:11: error: texture scale must be in [0, 1e+30], got -2");
+  EXPECT_EQ(errors[5].format(), "s.txt:6:15: error: texture colour must be in [0, 1e+30], got -1");
+  EXPECT_EQ(errors[6].format(), "s.txt:7:27: error: surface colour: expected a number, got 'x'");
+  EXPECT_EQ(errors[7].format(),
+            "s.txt:8:1: error: texture: expected N SCALE R G B [R0 G0 B0], got 6 arguments");
+  EXPECT_EQ(errors[8].format(),
+            "s.txt:9:25: error: texture: expected N SCALE R G B [R0 G0 B0], got 9 arguments");
+}
+
 TEST(ViewScript, ParsesPrintSweep) {
   const auto a = parseScript("print sweep\n", "s.txt");
   ASSERT_EQ(a.size(), 1u);

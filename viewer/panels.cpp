@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 namespace prism {
 
@@ -83,7 +84,8 @@ void sceneSection(ViewController& c, WindowState& state) {
     ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
   if (ui::button("Back to the file's values")) c.apply(RevertToFile{});
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the camera, the lights, ambient and fog as the scene file says (undoable)");
+    ImGui::SetTooltip(
+        "the camera, the lights, ambient, fog and textures as the scene file says (undoable)");
   if (c.reloading()) dimText("Reading the scene files...");
   keptEditsText(c);
   for (const std::string& w : c.sceneWarnings())
@@ -172,6 +174,65 @@ void fogSection(ViewController& c, WindowState& state) {
   }
   fogTooltip();
   if (changed) edit(c, state, [&] { c.apply(FogEdit{fog}); });
+}
+
+// A value for a float widget: a double past the float range would be
+// undefined behaviour to convert (a scene may hold 1e300).
+float toFloat(double value) {
+  const double limit = double(std::numeric_limits<float>::max());
+  return float(std::clamp(value, -limit, limit));
+}
+
+// A colour picked as floats: the channels the user did not change keep their
+// exact value (a float would round them). Never negative (a typed NaN
+// becomes 0 too: std::max keeps its first argument).
+bool pickColour(const char* label, Color& colour) {
+  float rgb[3] = {toFloat(colour.r), toFloat(colour.g), toFloat(colour.b)};
+  if (!ui::colourEdit(label, rgb)) return false;
+  bool changed = false;
+  for (int i = 0; i < 3; ++i) {
+    if (rgb[i] == toFloat(colour[i])) continue;
+    colour[i] = std::max(0.0, double(rgb[i]));
+    changed = true;
+  }
+  return changed;
+}
+
+void tooltip(const char* text) {
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+// Each texture of the scene (a `texture` line, on every primitive it
+// covers): its scale and the colours of its two ends, as one edit.
+void texturesSection(ViewController& c, WindowState& state) {
+  const FileValues& file = c.fileValues();
+  for (std::size_t i = 0; i < file.textures.size(); ++i) {
+    const FileTexture& texture = file.textures[i];
+    const std::string name = "texture " + std::to_string(i + 1);
+    const ui::Scope scope(name);
+    dimText(name + ": " + std::string(textureKindName(texture.group.kind)) +
+            (texture.place.empty() ? "" : ", on " + texture.place));
+    TextureValues values = c.edits().textureOver(file, i);
+    bool changed = false;
+    // A slider a decade either side of the file's scale; Ctrl+click types any.
+    const float fileScale = toFloat(texture.values().scale);
+    float scale = toFloat(values.scale);
+    if (ui::sliderFloat("scale", &scale, 0.1f * fileScale, 10.0f * fileScale, "%.4g",
+                        ImGuiSliderFlags_Logarithmic) &&
+        scale > 0.0f && std::isfinite(scale) && scale != toFloat(values.scale)) {
+      values.scale = double(scale);
+      changed = true;
+    }
+    tooltip("the pattern's size in the object's units (the texture line's SCALE)");
+    changed |= pickColour("texture colour", values.color);
+    tooltip("the colour where the pattern is 1 (the texture line's R G B)");
+    changed |= pickColour("surface colour", values.base);
+    tooltip("the colour where the pattern is 0: the material's own\n"
+            "(the surface line's R G B)");
+    if (changed) edit(c, state, [&] { c.apply(TextureEdit{i, values}); });
+    if (ui::button("reset")) c.apply(ResetTexture{i});
+    tooltip("back to the file's scale and colours for this texture");
+  }
 }
 
 // Whether `camera` can be rendered (docs/image-formation.md): a view direction, `up` not
@@ -455,6 +516,7 @@ void drawControlPanel(ViewController& c, WindowState& state, const FrameStats& f
   section("Render", [&] { renderSection(c, state); });
   section("Lights", [&] { lightsSection(c, state); });
   section("Fog", [&] { fogSection(c, state); });
+  if (!c.fileValues().textures.empty()) section("Textures", [&] { texturesSection(c, state); });
   section("Camera", [&] { cameraSection(c, state); });
   section("Display", [&] { displaySection(c, state); });
   section("View", [&] { viewSection(c, state, shownZoom); });

@@ -30,7 +30,52 @@ bool same(const RenderSettings& a, const RenderSettings& b) {
 
 template <class... F> struct Overloaded : F... { using F::operator()...; };
 
+// Where each texture is first used: the first primitive (in the order of the
+// kinds) whose material is one of its group's.
+std::vector<std::string> placesOf(const Scene& scene, const std::vector<TextureGroup>& groups) {
+  std::vector<std::string> places(groups.size());
+  if (groups.empty()) return places;
+  std::vector<std::size_t> groupOf(scene.materials.size(), groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (const std::uint32_t m : groups[g].materials)
+      groupOf[m] = g;
+  std::size_t left = groups.size();
+  for (const PrimitiveRef ref : scene.allPrimitives()) {
+    const std::size_t g = groupOf[scene.materialIndex(ref)];
+    if (g == groups.size() || !places[g].empty()) continue;
+    places[g] = scene.describe(ref);
+    if (--left == 0) break;
+  }
+  return places;
+}
+
 } // namespace
+
+FileValues FileValues::of(const Scene& scene) {
+  FileValues file{scene.camera, scene.ambient, scene.fog, scene.lights, {}};
+  const std::vector<TextureGroup> groups = textureGroups(scene);
+  std::vector<std::string> places = placesOf(scene, groups);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    file.textures.push_back(
+        {groups[g], scene.materials[groups[g].materials.front()], std::move(places[g])});
+  return file;
+}
+
+std::vector<std::optional<std::size_t>> renumberTextures(const FileValues& before,
+                                                         const FileValues& after) {
+  std::vector<std::optional<std::size_t>> to(before.textures.size());
+  std::vector<bool> taken(after.textures.size(), false);
+  for (std::size_t i = 0; i < before.textures.size(); ++i) {
+    const Material identity = textureIdentity(before.textures[i].material);
+    for (std::size_t j = 0; j < after.textures.size(); ++j) {
+      if (taken[j] || !(textureIdentity(after.textures[j].material) == identity)) continue;
+      to[i] = j; // textures alike pair off in order
+      taken[j] = true;
+      break;
+    }
+  }
+  return to;
+}
 
 std::vector<std::string> UserEdits::names() const {
   std::vector<std::string> names;
@@ -39,12 +84,19 @@ std::vector<std::string> UserEdits::names() const {
   if (fog) names.push_back("fog");
   for (const auto& [index, light] : lights)
     names.push_back("light " + std::to_string(index + 1));
+  for (const auto& [index, values] : textures)
+    names.push_back("texture " + std::to_string(index + 1));
   return names;
 }
 
 Light UserEdits::lightOver(const FileValues& file, std::size_t index) const {
   const auto it = lights.find(index);
   return it != lights.end() ? it->second : file.lights.at(index);
+}
+
+TextureValues UserEdits::textureOver(const FileValues& file, std::size_t index) const {
+  const auto it = textures.find(index);
+  return it != textures.end() ? it->second : file.textures.at(index).values();
 }
 
 void UserEdits::applyTo(Scene& scene) const {
@@ -61,29 +113,38 @@ bool operator==(const UserEdits& a, const UserEdits& b) {
          std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(),
                     [](const auto& x, const auto& y) {
                       return x.first == y.first && same(x.second, y.second);
-                    });
+                    }) &&
+         a.textures == b.textures;
 }
 
-UserEdits withEdit(UserEdits edits, const SceneEdit& edit, std::size_t lightCount) {
+UserEdits withEdit(UserEdits edits, const SceneEdit& edit, const FileValues& file) {
+  const auto exists = [](const char* what, std::size_t index, std::size_t count) {
+    if (index >= count)
+      throw std::out_of_range(std::string(what) + " " + std::to_string(index + 1) +
+                              " does not exist: the scene has " + std::to_string(count));
+  };
   std::visit(Overloaded{
                  [&](const SettingsEdit& e) { edits.settings = e.settings; },
                  [&](const LightEdit& e) {
-                   if (e.index >= lightCount)
-                     throw std::out_of_range("light " + std::to_string(e.index + 1) +
-                                             " does not exist: the scene has " +
-                                             std::to_string(lightCount));
+                   exists("light", e.index, file.lights.size());
                    edits.lights[e.index] = e.light;
                  },
                  [&](const AmbientEdit& e) { edits.ambient = e.ambient; },
                  [&](const FogEdit& e) { edits.fog = e.fog; },
+                 [&](const TextureEdit& e) {
+                   exists("texture", e.index, file.textures.size());
+                   edits.textures[e.index] = e.values;
+                 },
                  [&](const CameraEdit& e) { edits.camera = e.camera; },
                  [&](const ResetLight& e) { edits.lights.erase(e.index); },
+                 [&](const ResetTexture& e) { edits.textures.erase(e.index); },
                  [&](const ResetCamera&) { edits.camera.reset(); },
                  [&](const RevertToFile&) {
                    edits.camera.reset();
                    edits.ambient.reset();
                    edits.fog.reset();
                    edits.lights.clear();
+                   edits.textures.clear();
                  },
              },
              edit);
@@ -102,6 +163,11 @@ SessionEdit changeToShow(const UserEdits& edits, const FileValues& file, const S
   for (std::size_t i = 0; i < shown.lights.size(); ++i)
     if (const Light light = edits.lightOver(file, i); !same(light, shown.lights[i]))
       change.lights.emplace_back(i, light);
+  for (std::size_t i = 0; i < file.textures.size(); ++i) {
+    const TextureValues values = edits.textureOver(file, i);
+    const Material& shownMaterial = shown.materials[file.textures[i].group.materials.front()];
+    if (!(values == textureValuesOf(shownMaterial))) change.textures.emplace_back(i, values);
+  }
   return change;
 }
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -44,9 +45,7 @@ ViewController::~ViewController() {
   if (sceneSave_.writing.valid()) sceneSave_.writing.wait();
 }
 
-void ViewController::apply(const SceneEdit& edit) {
-  record(withEdit(current(), edit, session_->scene().lights.size()));
-}
+void ViewController::apply(const SceneEdit& edit) { record(withEdit(current(), edit, file_)); }
 
 void ViewController::record(UserEdits next) {
   if (next == current()) return; // nothing changed: no step, no restart
@@ -158,13 +157,19 @@ void ViewController::startLoading(const std::string& path) {
 }
 
 // The user's edits follow the scene into every state of the history: those of
-// lights the file no longer has are dropped, and the size follows the file's
-// `resolution` unless --size set it. Steps that no longer change anything go,
-// so that every undo does something.
-void ViewController::fitHistoryTo(const Scene& scene) {
+// lights the file no longer has are dropped, those of textures go to their
+// texture's new number (`textures`, from renumberTextures) or are dropped,
+// and the size follows the file's `resolution` unless --size set it. Steps
+// that no longer change anything go, so that every undo does something.
+void ViewController::fitHistoryTo(const Scene& scene,
+                                  const std::vector<std::optional<std::size_t>>& textures) {
   for (UserEdits& state : states_) {
     std::erase_if(state.lights,
                   [&](const auto& edit) { return edit.first >= scene.lights.size(); });
+    std::map<std::size_t, TextureValues> moved;
+    for (const auto& [index, values] : state.textures)
+      if (index < textures.size() && textures[index]) moved[*textures[index]] = values;
+    state.textures = std::move(moved);
     if (options_.sizeFromScene) {
       state.settings.width = scene.width;
       state.settings.height = scene.height;
@@ -205,7 +210,8 @@ void ViewController::install(LoadedScene loaded) {
   sweep_ = std::move(loaded.sweep);
   Scene& scene = *loaded.scene;
   watch_.watch(scene.files); // an edit may have added or dropped an include
-  file_ = FileValues::of(scene);
+  const FileValues before = std::exchange(file_, FileValues::of(scene));
+  const std::vector<std::optional<std::size_t>> textures = renumberTextures(before, file_);
 
   // The user's edits go over the re-read file where their value still exists.
   // (Dropped edits stay listed until the user's next edit: the file watch
@@ -213,7 +219,10 @@ void ViewController::install(LoadedScene loaded) {
   for (const auto& [index, light] : current().lights)
     if (index >= scene.lights.size())
       keptEdits_.dropped.push_back("light " + std::to_string(index + 1));
-  fitHistoryTo(scene);
+  for (const auto& [index, values] : current().textures)
+    if (index >= textures.size() || !textures[index])
+      keptEdits_.dropped.push_back("texture " + std::to_string(index + 1));
+  fitHistoryTo(scene, textures);
   keptEdits_.kept = current().names();
   current().applyTo(scene); // the hierarchy does not depend on the camera or the lights
 
@@ -221,6 +230,7 @@ void ViewController::install(LoadedScene loaded) {
   if (s.width != session_->settings().width || s.height != session_->settings().height)
     session_->apply({.settings = s});
   session_->setScene(std::move(loaded.scene), std::move(loaded.accel));
+  show(); // the edited textures: the session grouped the file's
   stale_ = true;
   ++successfulReloads_;
 }

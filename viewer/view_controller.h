@@ -17,6 +17,7 @@
 #include <deque>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,11 +50,12 @@ public:
 
   // Edits. Every change of a value goes through apply(), with one of the
   // SceneEdit alternatives (viewer/scene_edit.h: SettingsEdit, LightEdit,
-  // AmbientEdit, FogEdit, CameraEdit, and the resets ResetLight, ResetCamera,
-  // RevertToFile), whoever makes it: a panel, the mouse, a script. It cancels
-  // the work in flight and restarts refinement (an edit that changes nothing
-  // does neither), and becomes one undo step. A LightEdit of a light the
-  // scene does not have throws std::out_of_range.
+  // AmbientEdit, FogEdit, TextureEdit, CameraEdit, and the resets ResetLight,
+  // ResetTexture, ResetCamera, RevertToFile), whoever makes it: a panel, the
+  // mouse, a script. It cancels the work in flight and restarts refinement
+  // (an edit that changes nothing does neither), and becomes one undo step.
+  // A LightEdit or TextureEdit of a light or texture the scene does not have
+  // throws std::out_of_range.
   void apply(const SceneEdit& edit);
 
   // Undo and redo (Ctrl+Z, Ctrl+Shift+Z) step through the states the edits
@@ -82,10 +84,11 @@ public:
 
   // What the reloads did with the user's edits, for the panel, until the
   // user's next edit (or undo, redo): `kept` lists the edited values the last
-  // reload put over the re-read files ("camera", "ambient", "fog", "light 2");
-  // `dropped` the edits of lights that a file no longer has ("light 5"),
-  // which are gone from the undo history too. The render settings always
-  // stay and are not listed.
+  // reload put over the re-read files ("camera", "ambient", "fog", "light 2",
+  // "texture 1", by the texture's new number); `dropped` the edits of lights
+  // and textures that a file no longer has ("light 5", "texture 2"), which
+  // are gone from the undo history too. The render settings always stay and
+  // are not listed.
   struct ReloadEdits {
     std::vector<std::string> kept;
     std::vector<std::string> dropped;
@@ -187,7 +190,7 @@ private:
   UserEdits& current() { return states_[at_]; }
   void record(UserEdits next); // a new state, or the gesture's step changed
   void show();                 // puts the current state into the session
-  void fitHistoryTo(const Scene& scene);
+  void fitHistoryTo(const Scene& scene, const std::vector<std::optional<std::size_t>>& textures);
   void pollSceneSave();
 
   ViewOptions options_;

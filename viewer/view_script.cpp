@@ -116,6 +116,7 @@ const std::map<std::string, ScriptOp>& keywords() {
       {"fog", ScriptOp::Fog},
       {"light", ScriptOp::Light},
       {"intensity", ScriptOp::Intensity},
+      {"texture", ScriptOp::Texture},
       {"orbit", ScriptOp::Orbit},
       {"pan", ScriptOp::Pan},
       {"zoom", ScriptOp::Zoom},
@@ -219,6 +220,20 @@ void parseArguments(const std::string& line, const std::vector<Token>& t, LinePa
     a.index = p.integer(t[1], "light number", 1, 1000000);
     numbers(2, "intensity", 0.0);
     return;
+  case ScriptOp::Texture: { // as the scene language's `texture` and `surface`
+    if (t.size() != 6 && t.size() != 9) {
+      p.error(t.size() > 9 ? t[9] : t[0], "texture: expected N SCALE R G B [R0 G0 B0], got " +
+                                              std::to_string(t.size() - 1) + " arguments");
+      return;
+    }
+    a.index = p.integer(t[1], "texture number", 1, 1000000);
+    a.values.push_back(p.number(t[2], "texture scale", 0.0, kHuge));
+    if (double zero = 1.0; toNumber(t[2].text, zero) && zero == 0.0)
+      p.error(t[2], "texture scale must be positive, got " + t[2].text);
+    numbers(3, "texture colour", 0.0, 5);
+    numbers(6, "surface colour", 0.0);
+    return;
+  }
   case ScriptOp::Orbit:
     if (p.arity(t, 2, "YAW PITCH (degrees)")) numbers(1, "orbit", -kHuge);
     return;

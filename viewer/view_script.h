@@ -13,6 +13,10 @@
 //   fog R G B DENSITY        the fog's colour and density (0: no fog)
 //   light N X Y Z            move light N (from 1)
 //   intensity N R G B        set light N's intensity
+//   texture N SCALE R G B [R0 G0 B0]
+//                            texture N's (from 1) scale and value-1 colour, as
+//                            its `texture` line gives them; R0 G0 B0 the
+//                            value-0 colour, its `surface` line's
 //   orbit YAW PITCH          degrees;  pan DX DY (pixels);  zoom FACTOR;  reset
 //   overlay on|off | markers on|off
 //   exposure auto|lock       unlock / lock the exposure;  ev STOPS  its offset
@@ -52,6 +56,7 @@ enum class ScriptOp {
   Fog,
   Light,
   Intensity,
+  Texture,
   Orbit,
   Pan,
   Zoom,
@@ -80,7 +85,7 @@ struct ScriptAction {
   int line = 0;     // 1-based, for messages
   std::string text; // the line as written, for messages
   WaitFor waitFor = WaitFor::Done;
-  int index = 0;              // light number (from 1), frame count, depth
+  int index = 0;              // light or texture number (from 1), frame count, depth
   std::vector<double> values; // numbers in order; on/off as 1/0
   std::string path;           // save, screenshot; echo's text; what print prints
 };

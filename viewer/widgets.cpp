@@ -52,8 +52,8 @@ std::vector<std::string> WidgetLog::duplicateIds() const {
 
 // A widget as --dump-widgets lists it: every member by its own name but the
 // ImGui id, which means nothing outside the process.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(WidgetRecord, label, name, kind, value, active, visible, x, y,
-                                   w, h)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(WidgetRecord, label, name, kind, value, active, visible, x, y, w,
+                                   h)
 
 std::string WidgetLog::json() const {
   const nlohmann::json list = widgets_;
@@ -126,6 +126,13 @@ bool dragDoubles(const char* label, double* values, int count, float speed, cons
   const bool changed = ImGui::DragScalarN(label, ImGuiDataType_Double, values, count, speed,
                                           nullptr, nullptr, format);
   return noted(changed, label, "drag", numbers(values, count), frame);
+}
+
+bool colourEdit(const char* label, float* rgb) {
+  const float frame = ImGui::CalcItemWidth(); // the numbers and the swatch
+  const bool changed =
+      ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+  return noted(changed, label, "colour", numbers(rgb, 3), frame);
 }
 
 bool inputText(const char* label, std::string* text) {

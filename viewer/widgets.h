@@ -17,7 +17,8 @@ namespace prism {
 struct WidgetRecord {
   std::string label; // as shown, without ImGui's "##..." part
   std::string name;  // the scopes it sits in and its label: "Lights/light 2/intensity"
-  std::string kind;  // "button", "checkbox", "slider", "drag", "input", "header", "selectable"
+  // "button", "checkbox", "slider", "drag", "colour", "input", "header", "radio", "selectable"
+  std::string kind;
   std::string value; // what it shows: "true", "5", "0.1 0.2 0.3", the text; "" for buttons
   float x = 0, y = 0, w = 0, h = 0; // window pixels, origin top-left: where the mouse acts
   bool active = false;              // held by the mouse, or a text field being typed in
@@ -72,6 +73,9 @@ bool sliderFloat(const char* label, float* value, float min, float max, const ch
                  ImGuiSliderFlags flags = 0);
 // `count` doubles edited by dragging (or typing after a double-click).
 bool dragDoubles(const char* label, double* values, int count, float speed, const char* format);
+// A colour: three numbers dragged or typed, and a swatch that opens a colour
+// picker; floats, not limited to 1.
+bool colourEdit(const char* label, float* rgb);
 bool inputText(const char* label, std::string* text);
 bool collapsingHeader(const char* label);
 bool selectable(const char* label, bool selected = false);

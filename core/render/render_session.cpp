@@ -49,7 +49,8 @@ struct RenderSession::Work {
 };
 
 RenderSession::RenderSession(Scene scene, const RenderSettings& settings, AccelKind accel)
-    : scene_(std::make_unique<Scene>(std::move(scene))), accelKind_(accel), settings_(settings) {
+    : scene_(std::make_unique<Scene>(std::move(scene))),
+      textureGroups_(prism::textureGroups(*scene_)), accelKind_(accel), settings_(settings) {
   accel_ = makeAccel(*scene_, accelKind_);
   startWorkers(false);
 }
@@ -115,11 +116,16 @@ void RenderSession::apply(const SessionEdit& edit) {
       throw std::out_of_range("light " + std::to_string(index + 1) +
                               " does not exist: the scene has " +
                               std::to_string(scene_->lights.size()));
+  for (const auto& [index, values] : edit.textures)
+    if (index >= textureGroups_.size())
+      throw std::out_of_range("texture " + std::to_string(index + 1) +
+                              " does not exist: the scene has " +
+                              std::to_string(textureGroups_.size()));
   // thresh, jitter and no-AA only steer pass 2: a finished pass 1 stays valid when
   // nothing else changes.
   const RenderSettings& old = settings_;
   const bool onlyPass2 =
-      !edit.camera && !edit.ambient && !edit.fog && edit.lights.empty() &&
+      !edit.camera && !edit.ambient && !edit.fog && edit.lights.empty() && edit.textures.empty() &&
       (!edit.settings ||
        (old.width == edit.settings->width && old.height == edit.settings->height &&
         old.maxDepth == edit.settings->maxDepth && old.tileSize == edit.settings->tileSize &&
@@ -136,6 +142,9 @@ void RenderSession::apply(const SessionEdit& edit) {
   if (edit.fog) scene_->fog = *edit.fog;
   for (const auto& [index, light] : edit.lights)
     scene_->lights[index] = light;
+  for (const auto& [index, values] : edit.textures)
+    for (const std::uint32_t m : textureGroups_[index].materials)
+      setTextureValues(scene_->materials[m], values);
   ++restarts_;
   startWorkers(onlyPass2 && pass1Complete);
 }
@@ -144,6 +153,7 @@ void RenderSession::setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel
   stopWorkers();
   accel_ = std::move(accel); // refers to *scene, so both change together
   scene_ = std::move(scene);
+  textureGroups_ = prism::textureGroups(*scene_);
   ++restarts_;
   startWorkers(false);
 }

@@ -19,6 +19,7 @@
 #include "core/render/ray_counts.h"
 #include "core/render/renderer.h"
 #include "core/scene/scene.h"
+#include "core/scene/texture_groups.h"
 
 #include <atomic>
 #include <chrono>
@@ -74,7 +75,7 @@ struct SessionImage {
 // at once with one restart (an undo that puts back a camera and two lights, a
 // reload re-applying the user's edits). Unset members stay as they are; the
 // initialisers let a designated initialiser name only what changes:
-// apply({.ambient = Color(0.1)}). Later values (textures) become members.
+// apply({.ambient = Color(0.1)}).
 struct SessionEdit {
   std::optional<RenderSettings> settings{};
   std::optional<CameraSpec> camera{};
@@ -83,8 +84,14 @@ struct SessionEdit {
   // (each render generation's tracers decide from the scene whether to fog).
   std::optional<Fog> fog{};
   std::vector<std::pair<std::size_t, Light>> lights{}; // 0-based index, new value
+  // A texture's scale and colours, on every material of its group: the
+  // index is into RenderSession::textureGroups(). The file's values put back
+  // give the file's picture, bit for bit.
+  std::vector<std::pair<std::size_t, TextureValues>> textures{};
 
-  bool empty() const { return !settings && !camera && !ambient && !fog && lights.empty(); }
+  bool empty() const {
+    return !settings && !camera && !ambient && !fog && lights.empty() && textures.empty();
+  }
 };
 
 class RenderSession {
@@ -99,12 +106,14 @@ public:
   // Edits. Each one cancels the work in flight and restarts refinement, except
   // that a change of only `thresh` or `jitter` keeps a completed pass 1 and
   // redoes pass 2. An empty edit does nothing. Light indices are 0-based here
-  // (users see them from 1); one past the scene's lights throws
-  // std::out_of_range before anything is stopped or changed.
+  // (users see them from 1), as are texture groups; one past the scene's
+  // lights or groups throws std::out_of_range before anything is stopped or
+  // changed.
   void apply(const SessionEdit& edit);
   // A reloaded scene: new geometry with its hierarchy, built by
   // makeAccel(*scene, accelKind()) beforehand (on another thread: for 10^6
-  // primitives that takes a second).
+  // primitives that takes a second). Its textures are grouped as it comes,
+  // so it must come with the textures its files give (edit them after).
   void setScene(std::unique_ptr<Scene> scene, std::unique_ptr<Accel> accel);
   AccelKind accelKind() const { return accelKind_; }
 
@@ -113,6 +122,9 @@ public:
   Scene sceneCopy() const;
   const std::vector<Light>& lights() const { return scene_->lights; } // UI thread only
   const Scene& scene() const { return *scene_; }                      // UI thread only
+  // The scene's textured materials grouped as the scene came (constructor,
+  // setScene): what SessionEdit::textures indexes. UI thread only.
+  const std::vector<TextureGroup>& textureGroups() const { return textureGroups_; }
   // The hierarchy the workers trace with (read-only, so any thread may trace
   // with it too; replaced only by setScene, on the UI thread).
   const Accel& accel() const { return *accel_; }
@@ -143,6 +155,7 @@ private:
 
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<Accel> accel_;
+  std::vector<TextureGroup> textureGroups_; // of scene_ as it came
   AccelKind accelKind_;
   RenderSettings settings_;
 

@@ -233,6 +233,7 @@ TEST(SmoothTriangle, TessellatedSphereShadesLikeAnalyticSphere) {
   mesh.background = analytic.background;
   mesh.materials = analytic.materials;
   mesh.absorbingMaterials = analytic.absorbingMaterials;
+  mesh.texturedMaterials = analytic.texturedMaterials;
   for (Triangle& t : mesh.shapes<Triangle>())
     t.material = 0;
 

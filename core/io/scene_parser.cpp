@@ -167,6 +167,10 @@ private:
   void texture(Command& c);
   void textureSpace(Command& c);
   void image(Command& c);
+  // The next token, for the words after an image's PATH. Out of line: the
+  // lexer's peek is inlined where numbers are read, and more call sites
+  // make the compiler stop inlining it there, which slows reading.
+  [[gnu::noinline]] Token peekOption() { return file().lexer.peek(); }
   void uv(Command& c);
   void light(Command& c);
   void surface(Command& c);
@@ -534,7 +538,7 @@ void Parser::image(Command& c) {
   if (!raw) return;
   ImageMap map;
   ImageEncoding encoding = ImageEncoding::Auto;
-  for (Token word = file().lexer.peek(); !word.atEnd(); word = file().lexer.peek()) {
+  for (Token word = peekOption(); !word.atEnd(); word = peekOption()) {
     if (const std::optional<ImageWrap> wrap = imageWrapNamed(word.text)) {
       map.wrap = *wrap;
     } else if (const std::optional<ImageEncoding> e = imageEncodingNamed(word.text)) {
@@ -554,9 +558,9 @@ void Parser::image(Command& c) {
                      "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
     return;
   }
-  if (!scene_.images) scene_.images = std::make_shared<ImageLibrary>(oiioTextureBackend());
   std::variant<std::uint32_t, std::string> loaded;
   try {
+    if (!scene_.images) scene_.images = std::make_shared<ImageLibrary>(oiioTextureBackend());
     loaded = scene_.images->load(name, encoding);
   } catch (const std::runtime_error& e) { // the OpenImageIO module is missing
     loaded = std::string(e.what());

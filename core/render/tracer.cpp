@@ -62,6 +62,7 @@ Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCach
     : scene_(scene), accel_(accel), maxDepth_(maxDepth) {
   if (cache == BlockerCache::On) lastBlocker_.resize(std::size_t(maxDepth) * scene.lights.size());
   media_ = scene.hasMedia();
+  textured_ = scene.texturedMaterials;
   images_ = scene.images != nullptr;
   if (images_) cones_.resize(std::size_t(maxDepth) + 2);
 }
@@ -71,7 +72,7 @@ Tracer::Tracer(const Scene& scene, const Accel& accel, int maxDepth, BlockerCach
 // leaving it in the air: the same rule as refraction's index ratio (air
 // outside every solid, no solid inside another).
 namespace {
-// Sets a per-ray member of the tracer (the medium, the footprint) for a new
+// Sets a per-ray member of the tracer (the medium) for a new
 // ray and restores the parent's when the new ray is done.
 template <class T> class ScopedValue {
 public:
@@ -193,7 +194,7 @@ struct Tracer::Incidence {
   Vec3 nr;      // the normal mirror and refracted rays turn about
   SurfaceFrame frame;
   const PrimitiveRef* skip; // the flat primitive new rays leave, or null
-  double footprint;         // the ray cone's width here (scenes with images only)
+  double t;                 // the hit's distance along the incoming ray
 };
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts,
@@ -204,9 +205,10 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
       scene_.surfaceAt(hit.primitive, ray, hit.t,
                        record != nullptr ? SurfaceDetail::WithCoordinates : SurfaceDetail::Shading);
   // A textured material is blended at the point, out of line; every other
-  // one is used in place, at the cost of one well-predicted test.
+  // one is used in place: in a scene without textures at the cost of one
+  // test of a flag.
   const Material& m = scene_.materialAt(surface);
-  if (m.textured()) [[unlikely]]
+  if (textured_ && m.textured()) [[unlikely]]
     return shadeTextured(ray, hit, point, surface, m, depth, counts, record);
   return shadeWith(ray, hit, point, surface, m, depth, counts, record);
 }
@@ -241,6 +243,13 @@ Vec2 acrossSeam(Vec2 d, bool wraps) {
   return {d.x - std::round(d.x), d.y - std::round(d.y)};
 }
 } // namespace
+
+// A new ray starts as wide as its parent's cone is at the hit, `t` along
+// it, and spreads `turn` times as fast.
+void Tracer::setChildCone(int depth, double t, double turn) {
+  const RayCone& cone = cones_[std::size_t(depth)];
+  cones_[std::size_t(depth) + 1] = {cone.width + cone.spread * t, cone.spread * turn};
+}
 
 // The footprint of the ray cone on the surface is an ellipse: its width
 // across the ray's plane of incidence, and the width over cos(theta) along
@@ -298,13 +307,7 @@ Tracer::shadeWith(const Ray& ray, const Hit& hit, const Vec3& point, const Surfa
   // `g` there. (For every other primitive n is g and this changes nothing.)
   const Vec3 nr = glm::dot(ray.dir, n) < 0.0 ? n : g;
   const Incidence at{
-      point,
-      leaving,
-      n,
-      nr,
-      frame,
-      isFlat(hit.primitive.kind) ? &hit.primitive : nullptr,
-      images_ ? cones_[std::size_t(depth)].width + cones_[std::size_t(depth)].spread * hit.t : 0.0};
+      point, leaving, n, nr, frame, isFlat(hit.primitive.kind) ? &hit.primitive : nullptr, hit.t};
 
   const DirectLight direct = directLighting(ray, at, m, depth, counts, record);
   if (record != nullptr) record->children.reserve(2); // keeps the child pointers valid
@@ -382,10 +385,11 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
                                                        RayCounts& counts, RayTreeNode* record) {
   if (!(depth < maxDepth_ && m.ksr > 0.0)) return Color(0.0);
   const Ray r{at.frame.above, reflect(ray.dir, at.nr)};
+  if (images_) [[unlikely]]
+    setChildCone(depth, at.t, 1.0);
   // A mirror keeps the cone's spread: exact for a flat one; a curved mirror
   // would spread it further, which this leaves out (the image reflected in a
   // ball is filtered as if the ball were flat).
-  if (images_) cones_[std::size_t(depth) + 1] = {at.footprint, cones_[std::size_t(depth)].spread};
   if (bailout_ != nullptr)
     return m.ksr * traceOrSkip(r, RayKind::Reflected, m, depth, counts, record, at.skip);
   ++counts.reflected;
@@ -407,12 +411,10 @@ Tracer::directLighting(const Ray& ray, const Incidence& at, const Material& m, i
   const Ray t{at.frame.below, dir};
   // Through a flat interface the cone's angle changes as the ray's does:
   // d(theta_t) / d(theta_i) = eta cos(theta_i) / cos(theta_t).
-  if (images_) {
-    const RayCone& cone = cones_[std::size_t(depth)];
-    const double turn =
-        eta * std::abs(glm::dot(ray.dir, at.nr)) / std::max(std::abs(glm::dot(dir, at.nr)), 1e-3);
-    cones_[std::size_t(depth) + 1] = {at.footprint, cone.spread * turn};
-  }
+  if (images_) [[unlikely]]
+    setChildCone(depth, at.t,
+                 eta * std::abs(glm::dot(ray.dir, at.nr)) /
+                     std::max(std::abs(glm::dot(dir, at.nr)), 1e-3));
   const ScopedValue<const Material*> medium(inside_, at.leaving ? nullptr : &m);
   // After the test for total internal reflection, which is counted as usual.
   if (bailout_ != nullptr)

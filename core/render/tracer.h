@@ -92,6 +92,8 @@ private:
   Color shadeTextured(const Ray& ray, const Hit& hit, const Vec3& point,
                       const SurfacePoint& surface, const Material& stored, int depth,
                       RayCounts& counts, RayTreeNode* record);
+  // Sets the cone of the new ray leaving a hit `t` along a ray at `depth`.
+  void setChildCone(int depth, double t, double turn);
   // The image's colour at the hit, filtered over the current ray's footprint.
   Color imageColor(const Ray& ray, const Hit& hit, const Vec3& point, const SurfacePoint& surface,
                    const ImageMap& map, int depth, ImageLookup* lookup) const;
@@ -134,6 +136,8 @@ private:
   // The solid the current ray travels inside (its material absorbs), or null
   // for the air between solids. Set for each new ray and restored after it.
   const Material* inside_ = nullptr;
+  // The scene has textured materials: only then is a hit's material asked.
+  bool textured_ = false;
   // The scene has images: only then is a ray's footprint followed.
   bool images_ = false;
   // The footprint of the current ray at each depth (index: depth; eye rays

@@ -52,6 +52,10 @@ struct Scene {
   // adds materials (every reader and generator adds them through it); code
   // that fills `materials` itself sets it too.
   bool absorbingMaterials = false;
+  // Some material is textured (Material::textured), kept the same way: the
+  // tracer then looks at each hit's material for a texture, and otherwise
+  // not at all.
+  bool texturedMaterials = false;
   ShapeStorage<ShapeKinds> storage; // the primitives, a vector per kind: use shapes<Kind>()
   std::vector<Vec3> polygonVertices;
   std::vector<PolygonEdgeIndex> polygonEdgeIndices; // of the polygons with many vertices

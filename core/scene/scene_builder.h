@@ -25,9 +25,10 @@ public:
   // Adds to `scene`, which may already hold materials, groups and primitives
   // (a builder can continue what another started).
   explicit SceneBuilder(Scene& scene) : scene_(scene), materials_(scene.materials) {
-    scene_.absorbingMaterials =
-        scene_.absorbingMaterials || std::any_of(scene_.materials.begin(), scene_.materials.end(),
-                                                 [](const Material& m) { return m.absorbs(); });
+    for (const Material& m : scene_.materials) {
+      scene_.absorbingMaterials = scene_.absorbingMaterials || m.absorbs();
+      scene_.texturedMaterials = scene_.texturedMaterials || m.textured();
+    }
   }
   SceneBuilder(const SceneBuilder&) = delete;
   SceneBuilder& operator=(const SceneBuilder&) = delete;
@@ -167,9 +168,11 @@ public:
   std::uint32_t addFile(std::string name);
 
 private:
-  // Every material enters here: the table, and Scene::absorbingMaterials.
+  // Every material enters here: the table, and Scene::absorbingMaterials
+  // and texturedMaterials.
   std::uint32_t intern(const Material& m) {
     if (m.absorbs()) scene_.absorbingMaterials = true;
+    if (m.textured()) scene_.texturedMaterials = true;
     return materials_.intern(m);
   }
 

@@ -215,14 +215,16 @@ bool includeLeavesSandbox(std::string_view scText) {
 }
 
 // Looks up to the next '\n', where Prism's scan ends a line: tinyobjloader's
-// lines, which also end at '\r', are never longer.
+// lines, which also end at '\r', are never longer. An MTL `map_Kd` names a
+// file too (an image, read when a face uses its material).
 bool mtllibLeavesSandbox(std::string_view text) {
-  constexpr std::string_view keyword = "mtllib";
-  for (std::size_t at = text.find(keyword); at != std::string_view::npos;
-       at = text.find(keyword, at + 1)) {
-    const std::size_t end = text.find('\n', at);
-    const std::string_view rest = text.substr(at, end == std::string_view::npos ? end : end - at);
-    if (rest.find('/') != std::string_view::npos) return true;
+  for (const std::string_view keyword : {"mtllib", "map_Kd"}) {
+    for (std::size_t at = text.find(keyword); at != std::string_view::npos;
+         at = text.find(keyword, at + 1)) {
+      const std::size_t end = text.find('\n', at);
+      const std::string_view rest = text.substr(at, end == std::string_view::npos ? end : end - at);
+      if (rest.find('/') != std::string_view::npos) return true;
+    }
   }
   return false;
 }

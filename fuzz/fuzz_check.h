@@ -53,7 +53,8 @@ void writeFile(const std::filesystem::path& path, const std::string_view* bytes)
 
 // True when `text` could make a reader open a file outside the sandbox: a
 // path with a '/' in it after `include` or `image` anywhere (.sc paths may
-// follow on a later line) or after `mtllib` on the same line (OBJ). Such inputs are
+// follow on a later line) or after `mtllib` or `map_Kd` on the same line
+// (OBJ, MTL). Such inputs are
 // skipped, not read: what they find depends on the machine, and a 200 MB
 // library read as a scene only measures the disk.
 bool includeLeavesSandbox(std::string_view scText);

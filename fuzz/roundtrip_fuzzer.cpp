@@ -9,6 +9,7 @@
 #include "fuzz/fuzz_check.h"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <sstream>
 
@@ -46,6 +47,12 @@ public:
 private:
   std::optional<std::string> problem_;
 };
+
+// Triangle i's surface coordinates: its own, or the barycentric ones.
+std::array<Vec2, 3> uvsOf(const Scene& scene, std::uint32_t i) {
+  if (i < scene.triangleUvs.size()) return scene.triangleUvs[i];
+  return {Vec2(0.0), Vec2(1.0, 0.0), Vec2(0.0, 1.0)};
+}
 
 // Primitives in the order the writer visits them (a group's own, then its
 // sub-groups), which is the file order of the text it writes and so the order
@@ -120,6 +127,7 @@ void compare(const Scene& a, const Scene& b, Comparison& c) {
       const Triangle& ta = a.shapes<Triangle>()[ra.index];
       const Triangle& tb = b.shapes<Triangle>()[rb.index];
       c.same("triangle smoothness", ta.smooth(), tb.smooth());
+      c.same("triangle uvs", uvsOf(a, ra.index), uvsOf(b, rb.index));
       for (std::size_t i = 0; i < 3 && !c.problem(); ++i) {
         c.same("triangle vertices", a.meshVertices[ta.vertex[i]], b.meshVertices[tb.vertex[i]]);
         if (ta.smooth() && tb.smooth()) {

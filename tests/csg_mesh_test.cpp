@@ -264,7 +264,8 @@ TEST(CsgMesh, Errors) {
             "t.sc:1:1: error: mesh without matching end");
   EXPECT_EQ(sceneErrorsOf("mesh\n" + cubeTriangles() + "sphere 0 0 0 1\nend\n"),
             "t.sc:14:1: error: sphere: not allowed inside a mesh block (it holds triangle, "
-            "ptriangle, push, pop, translate, scale, rotate and include)");
+            "ptriangle, triangle_uv, ptriangle_uv, push, pop, translate, scale, rotate and "
+            "include)");
   EXPECT_EQ(sceneErrorsOf("mesh\n" + cubeTriangles() + "pop\nend\n"),
             "t.sc:14:1: error: pop without matching push (a mesh block is open: close it with "
             "'end' first)");

@@ -2,6 +2,7 @@
 
 #include "core/io/import_common.h"
 #include "core/io/obj_scan.h"
+#include "core/io/oiio_module.h"
 #include "core/io/reader_base.h"
 #include "core/io/scene_text.h"
 #include "core/math/model_range.h"
@@ -12,10 +13,13 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <sstream>
+#include <variant>
 
 namespace prism {
 
@@ -203,6 +207,35 @@ std::vector<bool> copyNormals(const tinyobj::attrib_t& attrib, Scene& scene) {
   return usable;
 }
 
+// A material's `map_Kd` read into the scene's image library, as the .sc
+// `image` command reads its file (sRGB unless the file says otherwise); an
+// unreadable one is an error at its FILE in the MTL file.
+ImageMap loadDiffuseMap(Scene& scene, const DiffuseMap& map) {
+  const auto fail = [&](const std::string& why) {
+    throw SceneError({Diagnostic{map.library, map.line, map.column,
+                                 "map_Kd: cannot read '" + map.path + "': " + why}});
+  };
+  const std::filesystem::path path(map.path);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    fail(std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
+  std::variant<std::uint32_t, std::string> loaded;
+  try {
+    if (!scene.images) scene.images = std::make_shared<ImageLibrary>(oiioTextureBackend());
+    loaded = scene.images->load(map.path, ImageEncoding::Auto);
+  } catch (const std::runtime_error& e) { // the OpenImageIO module is missing
+    loaded = std::string(e.what());
+  }
+  if (const std::string* why = std::get_if<std::string>(&loaded)) fail(*why);
+  ImageMap image;
+  image.image = std::get<std::uint32_t>(loaded);
+  image.peak = scene.images->info(image.image).peak;
+  image.scale = map.scale;
+  image.offset = map.offset;
+  image.wrap = map.clamp ? ImageWrap::Clamp : ImageWrap::Repeat;
+  return image;
+}
+
 bool allFinite(const MtlValues& v) {
   return isFinite(v.kd) && isFinite(v.ks) && std::isfinite(v.ns) && std::isfinite(v.ni) &&
          std::isfinite(v.dissolve);
@@ -243,7 +276,12 @@ private:
                                    "usemtl: tinyobjloader reads a value of material " +
                                        prism::quoted(name) + " as infinite"}});
     }
-    return materialFromMtl(values);
+    Material m = materialFromMtl(values);
+    // Kd multiplies the map, as C_mat multiplies an image. Read only for
+    // materials that faces use.
+    if (const auto map = scan_.diffuseMaps.find(name); map != scan_.diffuseMaps.end())
+      m.image = loadDiffuseMap(build_.scene(), map->second);
+    return m;
   }
 
   SceneBuilder& build_;
@@ -296,33 +334,42 @@ private:
   void addFace(std::span<const tinyobj::index_t> corners, const ObjFace& face) {
     const std::uint32_t material = materials_.of(face);
     bool smooth = true;
+    // Surface coordinates when every corner names a `vt` (v/t or v/t/n);
+    // otherwise each triangle keeps its barycentric ones.
+    bool textured = true;
     points_.clear();
     for (const tinyobj::index_t& ix : corners) {
       points_.push_back(vertex(ix, face));
       smooth = smooth && ix.normal_index >= 0 && usable_[std::size_t(ix.normal_index)];
+      textured = textured && ix.texcoord_index >= 0;
     }
     const Triangulation triangulation = triangulatePolygon(points_);
     const std::size_t droppedBefore = dropped_;
     for (const std::array<std::uint32_t, 3>& tri : triangulation.triangles) {
       std::array<std::uint32_t, 3> v, n;
+      std::array<Vec2, 3> uv;
       for (std::size_t c = 0; c < 3; ++c) {
         if (tri[c] >= corners.size()) internalError(file_, face.line, "a triangle out of range");
         const tinyobj::index_t& ix = corners[tri[c]];
         v[c] = std::uint32_t(ix.vertex_index);
         n[c] = smooth ? std::uint32_t(ix.normal_index) : kNoNormal;
+        if (textured) uv[c] = scan_.texcoords[std::size_t(ix.texcoord_index)];
       }
       const Origin origin{0, face.line};
-      if (!build_.meshTriangle(v, smooth ? &n : nullptr, material, origin)) ++dropped_;
+      if (!build_.meshTriangle(v, smooth ? &n : nullptr, material, origin,
+                               textured ? &uv : nullptr))
+        ++dropped_;
     }
     // A face of zero area is not simple either; it is reported as dropped.
     const bool keptSome = dropped_ - droppedBefore < triangulation.triangles.size();
     if (!triangulation.simple && keptSome) ++notSimple_;
   }
 
-  // The corner's vertex, its vertex and normal indices checked.
+  // The corner's vertex, its vertex, normal and texture coordinate indices checked.
   const Vec3& vertex(const tinyobj::index_t& ix, const ObjFace& face) const {
     if (ix.vertex_index < 0 || std::size_t(ix.vertex_index) >= scene_.meshVertices.size() ||
-        (ix.normal_index >= 0 && std::size_t(ix.normal_index) >= usable_.size())) {
+        (ix.normal_index >= 0 && std::size_t(ix.normal_index) >= usable_.size()) ||
+        (ix.texcoord_index >= 0 && std::size_t(ix.texcoord_index) >= scan_.texcoords.size())) {
       internalError(file_, face.line, "tinyobjloader read an index out of range");
     }
     const Vec3& p = scene_.meshVertices[std::size_t(ix.vertex_index)];
@@ -385,11 +432,16 @@ Scene loadObj(const std::filesystem::path& path, std::vector<Diagnostic>* warnin
     build.addFile(library.path);
   copyVertices(tiny.attrib, scene);
   const std::vector<bool> usable = copyNormals(tiny.attrib, scene);
+  // The scan's exact texture coordinates, which tinyobjloader's indices
+  // (checked against them) point into.
+  if (tiny.attrib.texcoords.size() / 2 != scan.texcoords.size())
+    internalError(name, 1, "tinyobjloader read another number of texture coordinates");
   tiny.attrib = tinyobj::attrib_t{};
 
   ObjMaterials materials(build, scan, tiny, name);
   FaceBuilder faces(build, scan, usable, materials, name);
   scene.shapes<Triangle>().reserve(scan.triangles);
+  if (!scan.texcoords.empty()) scene.triangleUvs.reserve(scan.triangles);
   for (const tinyobj::shape_t& shape : tiny.shapes)
     faces.addShape(shape.mesh);
   faces.checkAllFacesRead();

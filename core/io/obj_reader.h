@@ -1,9 +1,11 @@
 // Reads Wavefront OBJ meshes with their MTL materials (through tinyobjloader)
 // into a Scene of mesh triangles: smooth where the faces give vertex normals,
-// flat where they do not. OBJ has no camera and no lights, so the scene gets
-// a camera that frames the mesh and two default lights. The mapping of MTL
-// onto Prism's material model is documented in docs/importing.md, "Importing NFF
-// and OBJ". Errors are Diagnostics with file, line and column (SceneError).
+// flat where they do not, with their corners' texture coordinates where the
+// faces give them (Scene::triangleUvs, which an MTL `map_Kd` image reads).
+// OBJ has no camera and no lights, so the scene gets a camera that frames
+// the mesh and two default lights. The mapping of MTL onto Prism's material
+// model is documented in docs/importing.md, "Importing NFF and OBJ". Errors
+// are Diagnostics with file, line and column (SceneError).
 #pragma once
 
 #include "core/io/diagnostic.h"

@@ -238,14 +238,14 @@ std::optional<std::string> checkCorner(std::string_view corner,
 }
 
 bool ignoredObjStatement(std::string_view k) {
-  // Grouping, smoothing, texture coordinates, lines and points, and the
-  // free-form geometry Prism does not render.
+  // Grouping, smoothing, lines and points, and the free-form geometry Prism
+  // does not render.
   static constexpr std::string_view kIgnored[] = {
-      "o",        "g",    "s",          "vt",        "l",     "p",     "vp",     "cstype",
-      "deg",      "bmat", "step",       "curv",      "curv2", "surf",  "parm",   "trim",
-      "hole",     "scrv", "sp",         "end",       "con",   "mg",    "bevel",  "c_interp",
-      "d_interp", "lod",  "shadow_obj", "trace_obj", "ctech", "stech", "maplib", "usemap",
-      "call",     "csh",  "vw",         "t"};
+      "o",     "g",        "s",        "l",    "p",          "vp",        "cstype",
+      "deg",   "bmat",     "step",     "curv", "curv2",      "surf",      "parm",
+      "trim",  "hole",     "scrv",     "sp",   "end",        "con",       "mg",
+      "bevel", "c_interp", "d_interp", "lod",  "shadow_obj", "trace_obj", "ctech",
+      "stech", "maplib",   "usemap",   "call", "csh",        "vw",        "t"};
   for (const std::string_view i : kIgnored) {
     if (k == i) return true;
   }
@@ -306,16 +306,19 @@ void writeObjStatement(const Line& line, InPlaceWriter& out) {
   const std::string_view k = line.words[0].text;
   if (k == "v" || k == "vn" || ((k == "o" || k == "g") && line.words.size() > 1)) {
     out.putWords(line.words, line.words.size());
+  } else if (k == "vt") {
+    out.putWords(line.words, 3); // U and V (0 when absent, for both); W is not used
   } else if (k == "f") {
     out.put(k);
     for (std::size_t i = 1; i < line.words.size(); ++i) {
-      // Texture coordinates are not used: only the vertex and the normal.
       const std::array<std::string_view, 3> parts =
           cornerParts(line.words[i].text).value_or(std::array<std::string_view, 3>{});
       out.put(" ");
       out.put(parts[0]);
+      if (!parts[1].empty() || !parts[2].empty()) out.put("/");
+      out.put(parts[1]);
       if (!parts[2].empty()) {
-        out.put("//");
+        out.put("/");
         out.put(parts[2]);
       }
     }
@@ -350,6 +353,98 @@ void normalise(std::string& text, WriteStatement writeStatement) {
 }
 
 void normaliseMtlForTinyObj(std::string& text) { normalise(text, writeMtlStatement); }
+
+// `map_Kd [OPTIONS] FILE` of MTL file `name`: the options Prism maps (-s, -o,
+// -clamp) taken, the others' arguments checked and skipped, FILE (the rest of
+// the line, so it may hold spaces) resolved against the file's directory.
+// Nothing after reporting a problem.
+std::optional<DiffuseMap> diffuseMap(const Line& line, const std::string& name, Scanner& s) {
+  const std::string k(line.words[0].text);
+  DiffuseMap map;
+  std::size_t i = 1;
+  // The options that take 1 to 3 numbers (-o, -s, -t), 1 (-bm, -boost,
+  // -texres), 2 (-mm) or one word (on/off, a channel, a map type).
+  struct Option {
+    std::string_view name;
+    std::size_t minNumbers, maxNumbers; // both 0: one word
+  };
+  static constexpr Option kOptions[] = {
+      {"-o", 1, 3},      {"-s", 1, 3},       {"-t", 1, 3},      {"-bm", 1, 1},     {"-boost", 1, 1},
+      {"-texres", 1, 1}, {"-mm", 2, 2},      {"-blendu", 0, 0}, {"-blendv", 0, 0}, {"-cc", 0, 0},
+      {"-clamp", 0, 0},  {"-imfchan", 0, 0}, {"-type", 0, 0}};
+  static constexpr const char* kUvw[] = {"U", "V", "W"};
+  static constexpr const char* kValue[] = {"VALUE"};
+  static constexpr const char* kBaseGain[] = {"BASE", "GAIN"};
+  while (i < line.words.size() && line.words[i].text.starts_with('-') &&
+         !isNumber(line.words[i].text)) {
+    const Token& word = line.words[i];
+    const Option* option = nullptr;
+    for (const Option& o : kOptions)
+      if (o.name == word.text) option = &o;
+    if (option == nullptr) {
+      s.error(word, k + ": unknown option " + quoted(word.text));
+      return std::nullopt;
+    }
+    ++i;
+    if (option->maxNumbers == 0) {
+      if (i >= line.words.size()) {
+        s.error(word, k + ": " + std::string(word.text) + " expects a value, found nothing");
+        return std::nullopt;
+      }
+      const Token& value = line.words[i++];
+      if (word.text == "-clamp" || word.text == "-blendu" || word.text == "-blendv" ||
+          word.text == "-cc") {
+        if (value.text != "on" && value.text != "off") {
+          s.error(value, k + ": " + std::string(word.text) + " expects on or off, found " +
+                             quoted(value.text));
+          return std::nullopt;
+        }
+        if (word.text == "-clamp") map.clamp = value.text == "on";
+      }
+      continue;
+    }
+    std::size_t count = option->minNumbers;
+    while (count < option->maxNumbers && i + count < line.words.size() &&
+           isNumber(line.words[i + count].text))
+      ++count;
+    double values[3] = {0.0, 0.0, 0.0};
+    const char* const* names = option->maxNumbers == 3   ? kUvw
+                               : option->maxNumbers == 2 ? kBaseGain
+                                                         : kValue;
+    // Checked as a statement of their own, named "map_Kd -s" in messages.
+    const std::string named = k + " " + std::string(word.text);
+    Line part;
+    part.words.push_back({named, word.line, word.column});
+    part.words.insert(part.words.end(), line.words.begin() + std::ptrdiff_t(i),
+                      line.words.begin() + std::ptrdiff_t(std::min(i + count, line.words.size())));
+    if (!s.numbers(part, 1, count, names, values)) return std::nullopt;
+    if (word.text == "-s") {
+      for (std::size_t c = 0; c < 2 && c < count; ++c) {
+        if (values[c] == 0.0) {
+          s.error(line.words[i + c], k + ": -s " + kUvw[c] + " must not be 0");
+          return std::nullopt;
+        }
+      }
+      map.scale = Vec2(values[0], count > 1 ? values[1] : 1.0);
+    } else if (word.text == "-o") {
+      map.offset = Vec2(values[0], count > 1 ? values[1] : 0.0);
+    }
+    i += count;
+  }
+  if (i >= line.words.size()) {
+    s.error(line.words[0], k + ": expected a FILE");
+    return std::nullopt;
+  }
+  const Token& file = line.words[i];
+  map.path =
+      (std::filesystem::path(name).parent_path() / std::filesystem::path(span(line.words, i)))
+          .lexically_normal()
+          .string();
+  map.library = name;
+  map.line = file.line;
+  map.column = file.column;
+  return map;
+}
 
 // Reads, checks and normalises the material library at `path`, once.
 void scanLibrary(const std::filesystem::path& path, const Token& at, Scanner& s, ObjScan& scan) {
@@ -417,6 +512,11 @@ void scanMtl(std::string_view text, const std::string& name, ObjScan& scan) {
         } else if ((k == "d" || k == "Tr") && !(v >= 0.0 && v <= 1.0)) {
           s.error(w, std::string(k) + ": must be from 0 to 1, found " + quoted(w.text));
         }
+      } else if (k == "map_Kd") {
+        std::optional<DiffuseMap> map = diffuseMap(line, name, s);
+        // tinyobjloader's rule for the other statements: the first
+        // definition of a name counts.
+        if (map && firstDefinition) scan.diffuseMaps[current] = std::move(*map);
       } else if (k == "illum") {
         const Token* w = line.words.size() > 1 ? &line.words[1] : nullptr;
         const std::optional<std::uint64_t> v = w ? parseInteger(w->text) : std::nullopt;
@@ -428,8 +528,9 @@ void scanMtl(std::string_view text, const std::string& name, ObjScan& scan) {
           scan.materials[current] = true;
         }
       }
-      // Everything else (Ka, Ke, Tf, texture maps, PBR extensions) has no
-      // counterpart in Prism's model and is ignored.
+      // Everything else (Ka, Ke, Tf, the other texture maps, PBR extensions)
+      // has no counterpart in Prism's model and is ignored
+      // (docs/importing.md says why for map_Ks and map_d).
     }
   } catch (const TooManyErrors&) {
   }
@@ -467,6 +568,12 @@ ObjScan scanObj(std::string_view text, const std::string& name,
         if (!s.numbers(line, 1, 3, kXyz) || !s.noMoreThan(line, 4)) continue;
         ++counts[2];
       } else if (k == "vt") {
+        // u, optionally v (0 when absent) and w (not used).
+        static constexpr const char* kNames[] = {"U", "V", "W"};
+        const std::size_t n = std::clamp<std::size_t>(line.words.size() - 1, 1, 3);
+        double uvw[3] = {0.0, 0.0, 0.0};
+        if (!s.numbers(line, 1, n, kNames, uvw) || !s.noMoreThan(line, n + 1)) continue;
+        scan.texcoords.emplace_back(uvw[0], uvw[1]);
         ++counts[1];
       } else if (k == "f") {
         const std::size_t corners = line.words.size() - 1;

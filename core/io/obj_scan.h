@@ -37,6 +37,19 @@ struct ObjFace {
   std::uint32_t material = kNoMaterial; // into ObjScan::usedMaterials
 };
 
+// An MTL `map_Kd`: the image multiplying a material's Kd, with the options
+// Prism maps (docs/importing.md): -s and -o scale and offset the texture
+// coordinates, -clamp on clamps them.
+struct DiffuseMap {
+  std::string path;    // resolved against the MTL file's directory
+  std::string library; // the MTL file, for messages
+  int line = 0;        // of the FILE argument, for messages
+  int column = 0;
+  Vec2 scale{1.0};
+  Vec2 offset{0.0};
+  bool clamp = false;
+};
+
 struct MaterialLibrary {
   std::string path; // resolved against the OBJ's directory
   std::string text; // normalised for tinyobj::LoadMtl
@@ -44,11 +57,15 @@ struct MaterialLibrary {
 
 struct ObjScan {
   std::vector<Diagnostic> errors;
-  std::vector<ObjFace> faces;             // every `f`, in file order
-  std::uint64_t triangles = 0;            // sum over faces of (corners - 2)
-  std::vector<MaterialLibrary> libraries; // every readable `mtllib` file, once
-  std::vector<std::string> usedMaterials; // every `usemtl` name, once
-  std::map<std::string, bool> materials;  // every `newmtl` name: was `illum` given?
+  std::vector<ObjFace> faces;                    // every `f`, in file order
+  std::uint64_t triangles = 0;                   // sum over faces of (corners - 2)
+  std::vector<MaterialLibrary> libraries;        // every readable `mtllib` file, once
+  std::vector<std::string> usedMaterials;        // every `usemtl` name, once
+  std::map<std::string, bool> materials;         // every `newmtl` name: was `illum` given?
+  std::map<std::string, DiffuseMap> diffuseMaps; // by material name: its map_Kd, if any
+  // Every `vt`'s U and V (0 when absent), read exactly: tinyobjloader's
+  // parser is off by a few ulps, and only its indices are used.
+  std::vector<Vec2> texcoords;
 };
 
 // Checks the OBJ `text` of file `name`; `directory` resolves `mtllib` paths,
@@ -61,9 +78,10 @@ void scanMtl(std::string_view text, const std::string& name, ObjScan& scan);
 
 // Rewrites OBJ `text` that scanObj accepted, in place, into what tinyobjloader
 // reads: each line's statement with single spaces between its words, or
-// nothing for what Prism ignores or takes from the scan (comments, `vt`,
-// `usemtl`, `mtllib`, ...); faces' corners as "v" or "v//n". Line breaks are
-// kept, so tinyobjloader's messages name the file's own lines.
+// nothing for what Prism ignores or takes from the scan (comments,
+// `usemtl`, `mtllib`, ...); `vt` as "vt U [V]"; faces' corners as "v", "v/t",
+// "v//n" or "v/t/n". Line breaks are kept, so tinyobjloader's messages name
+// the file's own lines.
 void normaliseObjForTinyObj(std::string& text);
 
 } // namespace prism

@@ -101,12 +101,21 @@ public:
     }
   }
 
+  // Image textures and the triangles' surface coordinates are not written
+  // (a POV-Ray image_map would need the picture's path and a uv_mapping of
+  // each mesh): each material that has an image says so, in a comment.
   void materials() {
+    if (!scene_.triangleUvs.empty())
+      out_ << "// the triangles' per-vertex uv (triangle_uv) are not converted\n";
     for (std::size_t i = 0; i < scene_.materials.size(); ++i) {
       const PovMaterial m = povMaterialOf(scene_.materials[i]);
       if (!m.exact)
         out_ << "// " << materialName(std::uint32_t(i))
              << " transmits everything: POV-Ray shows no diffuse light on it\n";
+      if (const ImageMap& map = scene_.materials[i].image; map.active() && scene_.images)
+        out_ << "// " << materialName(std::uint32_t(i)) << " has the image texture "
+             << scene_.images->info(map.image).path
+             << ", which is not converted: POV-Ray shows its colour untextured\n";
       out_ << "#declare " << materialName(std::uint32_t(i)) << " = material {\n";
       if (scene_.materials[i].texture.active())
         patterned(scene_.materials[i]);

@@ -103,7 +103,7 @@ private:
     std::string_view name;
     Handler handler;
   };
-  static const std::array<Keyword, 36> kKeywords;
+  static const std::array<Keyword, 38> kKeywords;
   static Handler handlerFor(std::string_view name);
 
   // One file being parsed; they nest through `include`.
@@ -133,7 +133,8 @@ private:
   struct MeshFace {
     std::array<Vec3, 3> v;
     std::optional<std::array<Vec3, 3>> normals;
-    Location at; // where errors about the triangle point
+    std::optional<std::array<Vec2, 3>> uvs; // triangle_uv, ptriangle_uv (not in csg)
+    Location at;                            // where errors about the triangle point
     Origin origin;
   };
   struct OpenMesh {
@@ -190,9 +191,11 @@ private:
                                  double apexRadius);
   // The checks of a radius that must be positive.
   void requirePositiveRadius(Command& c, const Arg& radius);
+  // `triangle`, `ptriangle`, `triangle_uv` and `ptriangle_uv`, told apart by
+  // the command's name.
   void triangle(Command& c);
-  void ptriangle(Command& c);
-  void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals);
+  void addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals,
+                   std::array<Vec2, 3>* uvs);
   // Adds a shape placed by its own affine map (an ellipsoid, a cone, ...) after
   // the checks they share: within the model range, and, when the map is
   // what `prism convert` writes back, not stretched too unevenly for that.
@@ -263,7 +266,7 @@ private:
   std::optional<OpenMesh> mesh_;          // the open mesh block, if any
 };
 
-const std::array<Parser::Keyword, 36> Parser::kKeywords = {{
+const std::array<Parser::Keyword, 38> Parser::kKeywords = {{
     {"eye", &Parser::eye},
     {"lookat", &Parser::lookat},
     {"up", &Parser::up},
@@ -282,7 +285,9 @@ const std::array<Parser::Keyword, 36> Parser::kKeywords = {{
     {"cone", &Parser::cone},
     {"torus", &Parser::torus},
     {"triangle", &Parser::triangle},
-    {"ptriangle", &Parser::ptriangle},
+    {"ptriangle", &Parser::triangle},
+    {"triangle_uv", &Parser::triangle},  // each vertex with its surface coordinates U V
+    {"ptriangle_uv", &Parser::triangle}, // each vertex with its normal and U V
     {"box", &Parser::box},
     {"disc", &Parser::disc},
     {"cylinder", &Parser::cylinder},
@@ -904,38 +909,60 @@ void Parser::blob(Command& c) {
   build_.blob(placed);
 }
 
+// The four triangle forms: each vertex is X Y Z, then NX NY NZ for
+// `ptriangle` and `ptriangle_uv`, then U V for `triangle_uv` and
+// `ptriangle_uv`.
 void Parser::triangle(Command& c) {
   if (!mesh_ && openInCsg(c)) return;
-  static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "X2", "Y2", "Z2", "X3", "Y3", "Z3"};
-  Arg a[9];
-  if (!numbers(c, kNames, a) || !c.valid) return;
-  addTriangle(c, {vec(a), vec(a + 3), vec(a + 6)}, nullptr);
-}
-
-void Parser::ptriangle(Command& c) {
-  if (!mesh_ && openInCsg(c)) return;
-  static constexpr const char* kNames[] = {"X1", "Y1", "Z1", "NX1", "NY1", "NZ1",
-                                           "X2", "Y2", "Z2", "NX2", "NY2", "NZ2",
-                                           "X3", "Y3", "Z3", "NX3", "NY3", "NZ3"};
-  Arg a[18];
-  if (!numbers(c, kNames, a) || !c.valid) return;
-  std::array<Vec3, 3> normals;
+  const bool smooth = c.name.front() == 'p';
+  const bool withUv = c.name.ends_with("_uv");
+  if (withUv && mesh_ && build_.inCsg()) {
+    // A mesh operand's triangles live in the closed meshes' arrays, which
+    // keep no surface coordinates of their own.
+    error(c.keyword, c.name + ": per-vertex uv is not supported in a mesh block inside csg (its "
+                              "triangles get their barycentric coordinates; use triangle or "
+                              "ptriangle there)");
+    skipNumbers();
+    return;
+  }
+  // Per vertex: 3 coordinates, 3 for the normal, 2 for uv.
+  static constexpr const char* kNames[4][24] = {
+      {"X1", "Y1", "Z1", "X2", "Y2", "Z2", "X3", "Y3", "Z3"},
+      {"X1", "Y1", "Z1", "NX1", "NY1", "NZ1", "X2", "Y2", "Z2", "NX2", "NY2", "NZ2", "X3", "Y3",
+       "Z3", "NX3", "NY3", "NZ3"},
+      {"X1", "Y1", "Z1", "U1", "V1", "X2", "Y2", "Z2", "U2", "V2", "X3", "Y3", "Z3", "U3", "V3"},
+      {"X1",  "Y1",  "Z1", "NX1", "NY1", "NZ1", "U1", "V1",  "X2",  "Y2",  "Z2", "NX2",
+       "NY2", "NZ2", "U2", "V2",  "X3",  "Y3",  "Z3", "NX3", "NY3", "NZ3", "U3", "V3"}};
+  const int perVertex = 3 + (smooth ? 3 : 0) + (withUv ? 2 : 0);
+  const char* const* names = kNames[(withUv ? 2 : 0) + (smooth ? 1 : 0)];
+  Arg a[24];
+  for (int i = 0; i < 3 * perVertex; ++i)
+    if (!number(c, names[i], a[i])) return;
+  if (!c.valid) return;
+  std::array<Vec3, 3> vertices, normals;
+  std::array<Vec2, 3> uvs;
   for (int i = 0; i < 3; ++i) {
-    normals[i] = vec(a + 6 * i + 3);
-    if (normals[i] == Vec3(0.0)) {
-      invalid(c, a[6 * i + 3].token,
-              "N" + std::to_string(i + 1) + " (NX" + std::to_string(i + 1) + " NY" +
-                  std::to_string(i + 1) + " NZ" + std::to_string(i + 1) +
-                  ") must not be the zero vector");
+    const Arg* at = a + perVertex * i;
+    vertices[i] = vec(at);
+    if (smooth) {
+      normals[i] = vec(at + 3);
+      if (normals[i] == Vec3(0.0)) {
+        const std::string k = std::to_string(i + 1);
+        invalid(c, at[3].token,
+                "N" + k + " (NX" + k + " NY" + k + " NZ" + k + ") must not be the zero vector");
+      }
     }
+    if (withUv) uvs[i] = Vec2(at[perVertex - 2].value, at[perVertex - 1].value);
   }
   if (!c.valid) return;
-  addTriangle(c, {vec(a), vec(a + 6), vec(a + 12)}, &normals);
+  addTriangle(c, vertices, smooth ? &normals : nullptr, withUv ? &uvs : nullptr);
 }
 
 // Places a triangle (and its vertex normals, if any) through the current
-// transform and stores it in the scene's mesh arrays.
-void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals) {
+// transform and stores it in the scene's mesh arrays, with its per-vertex
+// surface coordinates, if any (which no transform changes).
+void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec3, 3>* normals,
+                         std::array<Vec2, 3>* uvs) {
   std::array<Vec3, 3> n;
   for (int i = 0; i < 3; ++i) {
     v[i] = transform_.point(v[i]);
@@ -955,10 +982,12 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
     }
   }
   // A mirror turns the counterclockwise order inside out; the normals stay
-  // outward by themselves (the inverse transpose mirrors them too).
+  // outward by themselves (the inverse transpose mirrors them too). The
+  // surface coordinates stay with their vertices.
   if (mirrors(transform_)) {
     std::swap(v[1], v[2]);
     std::swap(n[1], n[2]);
+    if (uvs != nullptr) std::swap((*uvs)[1], (*uvs)[2]);
   }
   if (const std::optional<std::string> problem = triangleProblem(v[0], v[1], v[2])) {
     error(c.keyword, c.name + ": " + *problem);
@@ -967,11 +996,15 @@ void Parser::addTriangle(Command& c, std::array<Vec3, 3> v, const std::array<Vec
   if (mesh_) {
     std::optional<std::array<Vec3, 3>> kept;
     if (normals != nullptr) kept = n;
+    std::optional<std::array<Vec2, 3>> keptUvs;
+    if (uvs != nullptr) keptUvs = *uvs;
     mesh_->faces.push_back(
-        {v, kept, Location{file().name, c.keyword.line, c.keyword.column}, origin(c)});
+        {v, kept, keptUvs, Location{file().name, c.keyword.line, c.keyword.column}, origin(c)});
     return;
   }
-  build_.triangle(v, normals != nullptr ? &n : nullptr, build_.currentMaterial(), origin(c));
+  const PrimitiveRef ref =
+      build_.triangle(v, normals != nullptr ? &n : nullptr, build_.currentMaterial(), origin(c));
+  if (uvs != nullptr) build_.setTriangleUvs(ref.index, *uvs);
 }
 
 // ---------------------------------------------------------------------------
@@ -1019,12 +1052,14 @@ bool Parser::openInCsg(Command& c) {
 bool Parser::notInMesh(const Token& keyword) {
   if (!mesh_) return false;
   static constexpr std::string_view kAllowed[] = {
-      "triangle", "ptriangle", "push", "pop", "translate", "scale", "rotate", "include", "end"};
+      "triangle",  "ptriangle", "triangle_uv", "ptriangle_uv", "push", "pop",
+      "translate", "scale",     "rotate",      "include",      "end"};
   if (std::find(std::begin(kAllowed), std::end(kAllowed), keyword.text) != std::end(kAllowed))
     return false;
   error(keyword, std::string(keyword.text) +
-                     ": not allowed inside a mesh block (it holds triangle, ptriangle, push, "
-                     "pop, translate, scale, rotate and include)");
+                     ": not allowed inside a mesh block (it holds triangle, ptriangle, "
+                     "triangle_uv, ptriangle_uv, push, pop, translate, scale, rotate and "
+                     "include)");
   skipNumbers();
   return true;
 }
@@ -1039,7 +1074,7 @@ void Parser::mesh(Command& c) {
 // outward, they are the open csg block's next operand, or outside csg plain
 // triangles. A mesh with an error inside is dropped (its errors say why).
 void Parser::endMesh() {
-  const OpenMesh open = std::move(*mesh_);
+  OpenMesh open = std::move(*mesh_);
   mesh_.reset();
   if (diagnosticCount() != open.errorsBefore) return;
   if (open.faces.empty()) {
@@ -1068,7 +1103,8 @@ void Parser::endMesh() {
     return;
   }
   // Wound inward: every triangle turned over, so the right-hand normals
-  // point out (vertex normals are kept as given).
+  // point out (vertex normals are kept as given, and each vertex keeps its
+  // surface coordinates).
   const bool flip = volume < 0.0;
   std::vector<std::optional<std::array<Vec3, 3>>> normals;
   normals.reserve(open.faces.size());
@@ -1077,6 +1113,7 @@ void Parser::endMesh() {
     if (flip) {
       std::swap(welded.triangles[i][1], welded.triangles[i][2]);
       if (n) std::swap((*n)[1], (*n)[2]);
+      if (std::optional<std::array<Vec2, 3>>& uv = open.faces[i].uvs) std::swap((*uv)[1], (*uv)[2]);
     }
     normals.push_back(n);
   }
@@ -1087,8 +1124,10 @@ void Parser::endMesh() {
   }
   for (std::size_t i = 0; i < open.faces.size(); ++i) {
     const auto& t = welded.triangles[i];
-    build_.triangle({welded.vertices[t[0]], welded.vertices[t[1]], welded.vertices[t[2]]},
-                    normals[i] ? &*normals[i] : nullptr, material, open.faces[i].origin);
+    const PrimitiveRef ref =
+        build_.triangle({welded.vertices[t[0]], welded.vertices[t[1]], welded.vertices[t[2]]},
+                        normals[i] ? &*normals[i] : nullptr, material, open.faces[i].origin);
+    if (open.faces[i].uvs) build_.setTriangleUvs(ref.index, *open.faces[i].uvs);
   }
 }
 

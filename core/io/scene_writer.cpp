@@ -125,10 +125,25 @@ private:
       return;
     }
     material(scene_.material(ref), depth);
+    if (ref.kind == kindOf<Triangle>) {
+      triangle(ref.index, depth);
+      return;
+    }
     scene_.visit(ref, [&](const auto& shape) {
       if constexpr (!std::is_same_v<std::decay_t<decltype(shape)>, Csg>)
         sc::write(text_, shape, depth);
     });
+  }
+
+  // A triangle with surface coordinates of its own as `triangle_uv` or
+  // `ptriangle_uv`; one whose coordinates are the barycentric default (or
+  // beyond the end of Scene::triangleUvs) as `triangle` or `ptriangle`.
+  void triangle(std::uint32_t index, int depth) {
+    static constexpr std::array<Vec2, 3> kBarycentric = {Vec2(0.0), Vec2(1.0, 0.0), Vec2(0.0, 1.0)};
+    const std::array<Vec2, 3>* uvs =
+        index < scene_.triangleUvs.size() ? &scene_.triangleUvs[index] : nullptr;
+    if (uvs != nullptr && *uvs == kBarycentric) uvs = nullptr;
+    sc::write(text_, scene_.shapes<Triangle>()[index], depth, uvs);
   }
 
   // `csg OPERATION`, each operand after its material, `end`: the block

@@ -84,13 +84,15 @@ void SceneBuilder::setTriangleUvs(std::uint32_t index, const std::array<Vec2, 3>
 
 std::optional<PrimitiveRef> SceneBuilder::meshTriangle(std::array<std::uint32_t, 3> vertex,
                                                        const std::array<std::uint32_t, 3>* normals,
-                                                       std::uint32_t material, Origin origin) {
+                                                       std::uint32_t material, Origin origin,
+                                                       const std::array<Vec2, 3>* uvs) {
   const Vec3& a = scene_.meshVertices[vertex[0]];
   const Vec3& b = scene_.meshVertices[vertex[1]];
   const Vec3& c = scene_.meshVertices[vertex[2]];
   if (triangleProblem(a, b, c)) return std::nullopt;
   Triangle t;
   t.vertex = vertex;
+  bool reversed = false;
   if (normals != nullptr) {
     t.normal = *normals;
     const Vec3 face = glm::cross(b - a, c - a);
@@ -99,12 +101,19 @@ std::optional<PrimitiveRef> SceneBuilder::meshTriangle(std::array<std::uint32_t,
     if (glm::dot(face, sum) < 0.0) {
       std::swap(t.vertex[1], t.vertex[2]);
       std::swap(t.normal[1], t.normal[2]);
+      reversed = true;
     }
   }
   t.material = material;
   t.origin = origin;
   scene_.shapes<Triangle>().push_back(t);
-  return inGroup({kindOf<Triangle>, std::uint32_t(scene_.shapes<Triangle>().size() - 1)});
+  const auto index = std::uint32_t(scene_.shapes<Triangle>().size() - 1);
+  if (uvs != nullptr) {
+    std::array<Vec2, 3> kept = *uvs;
+    if (reversed) std::swap(kept[1], kept[2]);
+    setTriangleUvs(index, kept);
+  }
+  return inGroup({kindOf<Triangle>, index});
 }
 
 void SceneBuilder::solidMesh(const ClosedMesh& mesh) {

@@ -121,11 +121,14 @@ public:
   // given, three existing unit normals). When the vertex normals all lie on
   // the other side of the face than its winding says, the winding is
   // reversed: the normals are what the modeller saw, and the tracer's
-  // entering/leaving test must agree with them. Nothing (and no primitive)
-  // for a zero-area triangle.
+  // entering/leaving test must agree with them. Surface coordinates `uvs`,
+  // when given, are stored with it (setTriangleUvs), each staying with its
+  // vertex when the winding is reversed. Nothing (and no primitive) for a
+  // zero-area triangle.
   std::optional<PrimitiveRef> meshTriangle(std::array<std::uint32_t, 3> vertex,
                                            const std::array<std::uint32_t, 3>* normals,
-                                           std::uint32_t material, Origin origin);
+                                           std::uint32_t material, Origin origin,
+                                           const std::array<Vec2, 3>* uvs = nullptr);
 
   // Gives triangle `index` (of shapes<Triangle>()) per-vertex surface
   // coordinates, in its vertices' order (Scene::triangleUvs; the others keep

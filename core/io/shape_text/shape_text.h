@@ -7,6 +7,7 @@
 
 #include "core/scene/scene.h"
 
+#include <array>
 #include <ostream>
 #include <string>
 
@@ -53,7 +54,9 @@ private:
 void write(TextOut& text, const Sphere& s, int depth);
 void write(TextOut& text, const Ellipsoid& e, int depth);
 void write(TextOut& text, const Polygon& p, int depth);
-void write(TextOut& text, const Triangle& t, int depth);
+// `triangle_uv` or `ptriangle_uv` when `uvs` (the triangle's per-vertex
+// surface coordinates, Scene::triangleUvs) are given.
+void write(TextOut& text, const Triangle& t, int depth, const std::array<Vec2, 3>* uvs = nullptr);
 void write(TextOut& text, const Cone& c, int depth);
 void write(TextOut& text, const Torus& t, int depth);
 void write(TextOut& text, const CappedCone& c, int depth);

@@ -13,6 +13,7 @@
 #include <OpenImageIO/texture.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -66,10 +67,28 @@ private:
 
 OIIO::ImageInput* createMemoryInput() { return new MemoryImageInput; }
 
+// One TextureSystem (with its own ImageCache) for the process, made on first
+// use and never destroyed: OpenImageIO 2.4's TextureSystem::destroy deletes
+// through a pointer of the wrong type (AddressSanitizer reports a
+// new-delete-type-mismatch), and one cache for all scenes bounds the memory
+// of MIP levels however many scenes the previewer reloads. Each library's
+// images have names of their own, and are invalidated when it goes.
+OIIO::TextureSystem* textureSystem() {
+  static OIIO::TextureSystem* const system = [] {
+    OIIO::TextureSystem* ts = OIIO::TextureSystem::create(false);
+    OIIO::ImageCache* cache = ts->imagecache();
+    cache->attribute("automip", 1);
+    cache->attribute("forcefloat", 1);
+    return ts;
+  }();
+  return system;
+}
+
 struct Library {
-  OIIO::TextureSystem* textures = nullptr;
-  std::mutex mutex; // loading only; lookups are the TextureSystem's, thread-safe
+  std::string prefix; // unique to the library: its images' names start with it
+  std::mutex mutex;   // loading only; lookups are the TextureSystem's, thread-safe
   std::vector<std::unique_ptr<LinearImage>> images;
+  std::vector<OIIO::ustring> names;
   std::vector<OIIO::TextureSystem::TextureHandle*> handles;
 };
 
@@ -140,19 +159,18 @@ OIIO::TextureOpt::Wrap wrapOf(int wrap) {
 } // namespace
 
 extern "C" __attribute__((visibility("default"))) void* prism_oiio_texture_create() {
+  static std::atomic<unsigned long long> made{0};
   auto* library = new Library;
-  // Private, so each scene's images and cache come and go with it.
-  library->textures = OIIO::TextureSystem::create(false);
-  OIIO::ImageCache* cache = library->textures->imagecache();
-  cache->attribute("automip", 1);
-  cache->attribute("forcefloat", 1);
+  library->prefix = "prism-image-" + std::to_string(made++) + "-";
   return library;
 }
 
 extern "C" __attribute__((visibility("default"))) void prism_oiio_texture_destroy(void* handle) {
   auto* library = static_cast<Library*>(handle);
   if (library == nullptr) return;
-  OIIO::TextureSystem::destroy(library->textures, true);
+  // Its cache entries and tiles go before its pixels do.
+  for (const OIIO::ustring& name : library->names)
+    textureSystem()->imagecache()->invalidate(name, true);
   delete library;
 }
 
@@ -177,21 +195,23 @@ prism_oiio_texture_load(void* handle, const char* path, int encoding, prism::Pri
   }
   const std::lock_guard lock(library->mutex);
   const int index = int(library->images.size());
-  const OIIO::ustring name("prism-image-" + std::to_string(index));
+  const OIIO::ustring name(library->prefix + std::to_string(index));
   OIIO::ImageSpec config;
   const LinearImage* pointer = image.get();
   config.attribute("prism:image", OIIO::TypeDesc::PTR, &pointer);
   library->images.push_back(std::move(image));
-  OIIO::ImageCache* cache = library->textures->imagecache();
+  OIIO::TextureSystem* textures = textureSystem();
   OIIO::TextureSystem::TextureHandle* texture = nullptr;
-  if (cache->add_file(name, createMemoryInput, &config))
-    texture = library->textures->get_texture_handle(name);
-  if (texture == nullptr || !library->textures->good(texture)) {
+  if (textures->imagecache()->add_file(name, createMemoryInput, &config))
+    texture = textures->get_texture_handle(name);
+  if (texture == nullptr || !textures->good(texture)) {
+    textures->imagecache()->invalidate(name, true);
     library->images.pop_back();
-    const std::string why = library->textures->geterror();
+    const std::string why = textures->geterror();
     setError(error, errorSize, why.empty() ? "the texture system refused it" : why);
     return -1;
   }
+  library->names.push_back(name);
   library->handles.push_back(texture);
   return index;
 }
@@ -210,11 +230,12 @@ prism_oiio_texture_lookup(void* handle, int index, float s, float t, float dsdx,
     options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
     options.interpmode = OIIO::TextureOpt::InterpClosest;
   }
-  OIIO::TextureSystem::Perthread* thread = library->textures->get_perthread_info();
-  if (library->textures->texture(library->handles[std::size_t(index)], thread, options, s, t, dsdx,
-                                 dtdx, dsdy, dtdy, 3, rgb))
+  OIIO::TextureSystem* textures = textureSystem();
+  OIIO::TextureSystem::Perthread* thread = textures->get_perthread_info();
+  if (textures->texture(library->handles[std::size_t(index)], thread, options, s, t, dsdx, dtdx,
+                        dsdy, dtdy, 3, rgb))
     return 1;
-  library->textures->geterror(); // consumed, so it does not pile up
+  textures->geterror(); // consumed, so it does not pile up
   rgb[0] = rgb[1] = rgb[2] = 0.0f;
   return 0;
 }

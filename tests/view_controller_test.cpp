@@ -6,6 +6,7 @@
 #include "viewer/file_watch.h"
 #include "viewer/view_controller.h"
 
+#include "core/io/image_io.h"
 #include "core/io/scene_loader.h"
 #include "core/io/scene_parser.h"
 #include "core/render/exposure.h"
@@ -112,6 +113,25 @@ TEST(ViewController, ReloadsChangedIncludesAndKeepsTheLastGoodSceneOnErrors) {
   updateUntil(c, [&] { return c.successfulReloads() == 1; });
   EXPECT_TRUE(c.sceneErrors().empty());
   EXPECT_EQ(c.scene().lights.size(), 2u);
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+}
+
+// An image a surface reads is watched like an include: a new picture in the
+// file reloads the scene, and the reloaded scene has the new texels.
+TEST(ViewController, ReloadsAChangedImage) {
+  ScratchDir dir;
+  writeImage8(dir / "tex.png", 1, 1, {0, 0, 255});
+  writeFile(dir / "main.sc", std::string(kMain) + "surface 1 1 1 1 0 0 1 1\nimage tex.png\n"
+                                                  "sphere 2 0 0 0.5\n");
+  writeFile(dir / "lights.sc", "light 2 3 4 30 30 30\n");
+  const Scene scene = loadScene(dir / "main.sc");
+  ViewController c(scene, optionsFor(scene, dir / "main.sc"));
+  updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
+  writeImage8(dir / "tex.png", 2, 1, {255, 0, 0, 255, 0, 0}); // red, and another size
+  updateUntil(c, [&] { return c.successfulReloads() == 1; });
+  ASSERT_NE(c.scene().images, nullptr);
+  EXPECT_EQ(c.scene().images->info(0).width, 2);
+  EXPECT_EQ(c.scene().images->info(0).peak, Color(1, 0, 0));
   updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
 }
 

@@ -22,6 +22,18 @@ constexpr auto kPollInterval = std::chrono::milliseconds(500);
 
 } // namespace
 
+namespace {
+// What a reload reads: the scene's files and its images (an image edited in
+// a paint program reloads the scene like an edited include).
+std::vector<std::string> watchedFiles(const Scene& scene) {
+  std::vector<std::string> files = scene.files;
+  if (scene.images)
+    for (std::size_t i = 0; i < scene.images->size(); ++i)
+      files.push_back(scene.images->info(std::uint32_t(i)).path);
+  return files;
+}
+} // namespace
+
 ViewController::ViewController(Scene scene, const ViewOptions& options,
                                std::vector<std::string> warnings)
     : options_(options), file_(FileValues::of(scene)), sceneWarnings_(std::move(warnings)),
@@ -31,7 +43,7 @@ ViewController::ViewController(Scene scene, const ViewOptions& options,
   if (!sweep_.error.empty()) std::cerr << sweep_.error << "\n";
   for (const std::string& line : sceneWarnings_)
     std::cerr << line << "\n"; // also for whoever runs it from a terminal
-  watch_.watch(scene.files);
+  watch_.watch(watchedFiles(scene));
   UserEdits start;
   start.settings = options.settings;
   start.camera = options.camera;
@@ -209,7 +221,7 @@ void ViewController::install(LoadedScene loaded) {
   if (!loaded.sweep.error.empty()) std::cerr << loaded.sweep.error << "\n";
   sweep_ = std::move(loaded.sweep);
   Scene& scene = *loaded.scene;
-  watch_.watch(scene.files); // an edit may have added or dropped an include
+  watch_.watch(watchedFiles(scene)); // an edit may have added or dropped an include or image
   const FileValues before = std::exchange(file_, FileValues::of(scene));
   const std::vector<std::optional<std::size_t>> textures = renumberTextures(before, file_);
 

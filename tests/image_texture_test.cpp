@@ -228,6 +228,20 @@ TEST(ImageTexture, ShadedColourIsTheMaterialTimesTheTexel) {
   expectVecNear(red.material.color, {0.5, 0, 0}, 1e-6);
 }
 
+// The --pixel ray tree names the image and prints the lookup.
+TEST(ImageTexture, RayTreePrintsTheLookup) {
+  SmallImage small;
+  const Scene scene = parseScene(floorAt("small.png", 0.5), (small.dir.path() / "p.sc").string());
+  const RayTreeNode root = traced(scene, {{0.3, 0.2, 4.0}, {0, 0, -1}});
+  std::ostringstream out;
+  printRayTree(out, root, scene);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("image '" + small.png.string() + "' (2 x 2, srgb) at (s, t) = (5.15, 5.1)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("footprint 0.04 wide"), std::string::npos) << text;
+}
+
 TEST(ImageTexture, UnusedCostsNothing) {
   const Scene plain = parseScene("sphere 0 0 0 1\n", "p.sc");
   EXPECT_EQ(plain.images, nullptr); // no library, no module loaded for it

@@ -15,6 +15,7 @@
 #include "core/render/ray_tree.h"
 #include "core/render/tracer.h"
 #include "core/scene/material_blend.h"
+#include "core/scene/texture_groups.h"
 #include "core/texture/image_library.h"
 #include "core/texture/srgb.h"
 #include "tests/test_expect.h"
@@ -251,6 +252,105 @@ TEST(ImageTexture, UnusedCostsNothing) {
   ASSERT_NE(two.images, nullptr);
   EXPECT_EQ(two.images->size(), 1u);
   EXPECT_EQ(two.materials.size(), 1u); // one material for both: images need no object space
+}
+
+// The previewer edits an image as a texture (core/scene/texture_groups.h):
+// one `image` line is one group, on every primitive it covers (one material:
+// an image needs no object space); another file is another group; an image
+// with a procedural texture is one group of the texture's object spaces,
+// whose edit covers both. Untextured materials are in none.
+TEST(ImageTexture, GroupsGatherWhatOneImageLineMade) {
+  SmallImage small;
+  writeImage8(small.dir.path() / "other.png", 1, 1, {10, 200, 30});
+  const Scene scene = parseScene(R"(
+surface 0.8 0.6 0.4  1 0 0  1 1
+image small.png
+uv 2 1  0.1 0.2
+sphere 0 0 0 1
+push
+  translate 3 0 0
+  sphere 0 0 0 1
+pop
+polygon 4  -5 -1 -5  -5 -1 5  5 -1 5  5 -1 -5
+image other.png
+uv -4 4  0 0
+sphere 0 5 0 1
+surface 0.8 0.6 0.4  1 0 0  1 1
+texture marble 0.5  0.1 0.2 0.3  1 0 0  1
+image small.png
+uv 2 1  0.1 0.2
+push
+  translate 0 -5 0
+  sphere 0 0 0 1
+pop
+push
+  translate 0 -8 0
+  sphere 0 0 0 1
+pop
+surface 0.8 0.6 0.4  1 0 0  1 1
+sphere 0 0 -5 1
+)",
+                                 (small.dir.path() / "g.sc").string());
+  const auto materialIndex = [&](std::size_t sphere) {
+    return scene.shapes<Sphere>().at(sphere).material;
+  };
+  const std::vector<TextureGroup> groups = textureGroups(scene);
+  ASSERT_EQ(groups.size(), 3u);
+  // One line over two spheres and a polygon: one material, one group.
+  EXPECT_TRUE(groups[0].imageOnly());
+  EXPECT_EQ(groups[0].materials, std::vector<std::uint32_t>{materialIndex(0)});
+  EXPECT_EQ(materialIndex(1), materialIndex(0));
+  EXPECT_EQ(scene.shapes<Polygon>().at(0).material, materialIndex(0));
+  EXPECT_EQ(groups[0].image, scene.materials[materialIndex(0)].image);
+  EXPECT_EQ(groups[0].scale, 0.5); // one repeat of the image: 1 / SU
+  // Another file: another group; a negative SU flips the image, its size is 1 / |SU|.
+  EXPECT_TRUE(groups[1].imageOnly());
+  EXPECT_EQ(groups[1].materials, std::vector<std::uint32_t>{materialIndex(2)});
+  EXPECT_NE(groups[1].image.image, groups[0].image.image);
+  EXPECT_EQ(groups[1].scale, 0.25);
+  // The texture with the image: its two object spaces, one group.
+  EXPECT_EQ(groups[2].kind, TextureKind::Marble);
+  EXPECT_TRUE(groups[2].image.active());
+  EXPECT_EQ(groups[2].materials, (std::vector<std::uint32_t>{materialIndex(3), materialIndex(4)}));
+  EXPECT_EQ(groups[2].scale, 0.5); // the pattern's
+  EXPECT_FALSE(scene.materials[materialIndex(5)].textured());
+
+  // An image's edit: its size (SU and SV alike, the offset kept) and its
+  // tint; the texture's value-1 colour means nothing to it and stays.
+  const Material file = scene.materials[materialIndex(0)];
+  EXPECT_EQ(textureValuesOf(file), (TextureValues{0.5, Color(1.0), Color(0.8, 0.6, 0.4)}));
+  Material m = file;
+  setTextureValues(m, {0.25, Color(0.1), Color(0, 0, 1)}, groups[0]);
+  EXPECT_EQ(m.image.scale, Vec2(4, 2));
+  EXPECT_EQ(m.image.offset, Vec2(0.1, 0.2));
+  EXPECT_EQ(m.color, Color(0, 0, 1));
+  EXPECT_EQ(m.texture, file.texture);
+  // Any edit, then the file's values: the file's material, bit for bit.
+  setTextureValues(m, {0.3, Color(1.0), Color(0.5)}, groups[0]);
+  setTextureValues(m, textureValuesOf(file), groups[0]);
+  EXPECT_EQ(m, file);
+  Material flipped = scene.materials[materialIndex(2)];
+  setTextureValues(flipped, {1.0, Color(1.0), Color(1.0)}, groups[1]);
+  EXPECT_EQ(flipped.image.scale, Vec2(-1, 1));
+  // With a texture: the pattern's scale, and the image sized with it.
+  Material both = scene.materials[materialIndex(4)];
+  setTextureValues(both, {1.0, Color(0.9), Color(0.2)}, groups[2]);
+  EXPECT_EQ(both.texture.scale, 1.0);
+  EXPECT_EQ(both.texture.color, Color(0.9));
+  EXPECT_EQ(both.image.scale, Vec2(1, 0.5));
+  EXPECT_EQ(both.texture.offset, scene.materials[materialIndex(4)].texture.offset);
+  // The identity leaves out the edited values, the image's scale and which
+  // image (the previewer compares the files), not the rest.
+  Material elsewhere = file; // another file, size and tint
+  elsewhere.image.image = groups[1].image.image;
+  elsewhere.image.peak = groups[1].image.peak;
+  elsewhere.image.scale = Vec2(-4, 4);
+  elsewhere.color = Color(0.1);
+  EXPECT_EQ(textureIdentity(elsewhere), textureIdentity(file));
+  Material moved = file;
+  moved.image.offset = Vec2(0.0);
+  EXPECT_FALSE(textureIdentity(moved) == textureIdentity(file));
+  EXPECT_FALSE(textureIdentity(both) == textureIdentity(file));
 }
 
 TEST(ImageTexture, KeywordsAndErrors) {

@@ -1,9 +1,11 @@
 // The previewer's render session, without a window: the progressive schedule
 // takes each sample once, the finished film is exactly render()'s, edits restart
 // and change only what they should, cancellation is prompt.
+#include "core/io/image_io.h"
 #include "core/io/scene_parser.h"
 #include "core/render/render_session.h"
 #include "tests/render_fixtures.h"
+#include "tests/test_files.h"
 
 #include <gtest/gtest.h>
 
@@ -255,6 +257,73 @@ TEST(RenderSession, TextureEditsRenderAsTheFileSaysAndTheFilesValuesGiveItsPictu
   session.apply({.textures = {{0, file}}});
   EXPECT_EQ(session.progress().restarts, 2u);
   expectSameFilm(session.waitForResult(), fileFilm);
+}
+
+// An image (a 4 x 4 PNG) on a sphere and the floor, one `image` line, and
+// the same image under a marble texture on another sphere. The `uv` scales,
+// the tint and the marble's scale are written in, so that an edit's picture
+// can be compared with the file that says the same.
+std::string imageRoom(const std::string& floorUv, const Color& tint, double marbleScale,
+                      const std::string& marbleUv) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "eye 0 2 8  lookat 0 0.5 0  fov 45\n"
+          "ambient 0.1 0.1 0.1\n"
+          "light 3 5 4  30 30 30\n"
+       << "surface " << tint.r << " " << tint.g << " " << tint.b << "  0.9 0.1 0  20 1\n"
+       << "image grid.png\nuv " << floorUv << "  0.1 0.2\n"
+       << "sphere -1.2 0.6 0 0.6\n"
+          "polygon 4  -5 0 -5  -5 0 5  5 0 5  5 0 -5\n"
+          "surface 0.9 0.9 0.9  0.9 0.1 0  20 1\n"
+       << "texture marble " << marbleScale << "  0.2 0.1 0.1  0.9 0.1 0  20\n"
+       << "image grid.png\nuv " << marbleUv << "  0 0\n"
+       << "push\n  translate 1.2 0.6 0\n  sphere 0 0 0 0.6\npop\n";
+  return text.str();
+}
+
+// An image's edit (its size: SU and SV alike; its tint: the surface colour)
+// renders as the file with the edited `uv` and `surface` written in, and so
+// does a texture with an image, whose scale sizes both. The file's values
+// put back give the file's picture, bit for bit.
+TEST(RenderSession, ImageEditsRenderAsTheFileSaysAndTheFilesValuesGiveItsPicture) {
+  test::ScratchDir dir;
+  std::vector<std::uint8_t> rgb;
+  for (int i = 0; i < 16; ++i)
+    rgb.insert(rgb.end(), {std::uint8_t(40 + 13 * i), std::uint8_t(250 - 15 * i),
+                           std::uint8_t(i % 3 == 0 ? 230 : 20)});
+  writeImage8(dir / "grid.png", 4, 4, rgb);
+  const Color tint(0.8, 0.7, 0.6);
+  const Scene scene = parseScene(imageRoom("2 4", tint, 0.5, "1 1"), (dir / "image.sc").string());
+  const Scene written = parseScene(imageRoom("4 8", Color(0.3, 0.9, 0.5), 1.0, "0.5 0.5"),
+                                   (dir / "edited.sc").string());
+  const RenderSettings s = smallSettings();
+  const RenderResult fileFilm = renderDirect(scene, s);
+  const RenderResult writtenFilm = renderDirect(written, s);
+  ASSERT_FALSE(writtenFilm.film.radiance == fileFilm.film.radiance); // the edit shows
+
+  RenderSession session(scene, s);
+  ASSERT_EQ(session.textureGroups().size(), 2u);
+  const TextureGroup& image = session.textureGroups()[0];
+  EXPECT_TRUE(image.imageOnly());
+  EXPECT_EQ(image.scale, 0.5); // one repeat: 1 / SU
+  const TextureValues file = textureValuesOf(scene.materials[image.materials.front()]);
+  const TextureValues marbleFile =
+      textureValuesOf(scene.materials[session.textureGroups()[1].materials.front()]);
+  TextureValues edited = file;
+  edited.scale = 0.25;
+  edited.base = Color(0.3, 0.9, 0.5);
+  TextureValues marbleEdited = marbleFile;
+  marbleEdited.scale = 1.0;
+  session.waitForResult();
+  session.apply({.textures = {{0, edited}, {1, marbleEdited}}});
+  EXPECT_EQ(session.progress().restarts, 1u);
+  expectSameFilm(session.waitForResult(), writtenFilm);
+  EXPECT_EQ(session.scene().materials[image.materials.front()].image.scale, Vec2(4, 8));
+
+  session.apply({.textures = {{0, file}, {1, marbleFile}}});
+  expectSameFilm(session.waitForResult(), fileFilm);
+  for (std::size_t m = 0; m < scene.materials.size(); ++m)
+    EXPECT_EQ(session.scene().materials[m], scene.materials[m]);
 }
 
 TEST(RenderSession, OneApplyChangesSeveralValuesWithOneRestart) {

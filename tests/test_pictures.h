@@ -1,5 +1,6 @@
 // Pictures written by the program under test, read back with OIIO and
-// compared pixel for pixel.
+// compared pixel for pixel; small pictures for scenes to read, written with
+// OIIO by tests that do not link the renderer.
 #pragma once
 
 #include "test_files.h"
@@ -35,6 +36,16 @@ inline std::optional<Picture> readPicture(const fs::path& path) {
   if (!in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::UINT8, p.pixels.data()))
     return std::nullopt;
   return p;
+}
+
+// Interleaved 8-bit RGB (row 0 at the top) as a picture of `path`'s format;
+// false if it cannot be written.
+inline bool writePicture8(const fs::path& path, int width, int height,
+                          const std::vector<std::uint8_t>& rgb) {
+  auto out = OIIO::ImageOutput::create(path.string());
+  return out &&
+         out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)) &&
+         out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) && out->close();
 }
 
 // True when a and b have the same size and equal RGB in every pixel.

@@ -261,7 +261,7 @@ sphere 0 0 -5 1
   Material m = scene.materials[materialIndex(1)];
   EXPECT_EQ(textureValuesOf(m), (TextureValues{2.0, Color(0.1, 0.2, 0.3), Color(0.8, 0.6, 0.4)}));
   const TextureValues edited{0.25, Color(1, 0.5, 0), Color(0, 0, 1)};
-  setTextureValues(m, edited);
+  setTextureValues(m, edited, groups[0]);
   EXPECT_EQ(textureValuesOf(m), edited);
   EXPECT_EQ(m.texture.offset, scene.materials[materialIndex(1)].texture.offset);
   EXPECT_NE(m.texture.offset, Vec3(0.0)); // translated: the check above could fail

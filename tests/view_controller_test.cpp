@@ -934,6 +934,148 @@ TEST(ViewControllerTexture, SaveSceneAsWritesTheEditedTexture) {
   EXPECT_EQ(renderOf(back, options), finishedImage(c));
 }
 
+// A checker floor (texture 1) and an image on two spheres (texture 2: one
+// `image` line). The image's file, its `uv` scale, the spheres' tint and the
+// number of lights are written in.
+struct ImageFile {
+  std::string image = "grid.png";
+  std::string uv = "2 4";
+  Color tint{0.8, 0.7, 0.6};
+  int lights = 1;
+
+  std::string text() const {
+    std::ostringstream t;
+    t.precision(17);
+    t << "eye 0 1 5\nlookat 0 0 0\nresolution 40 30\n";
+    for (int i = 0; i < lights; ++i)
+      t << "light " << 2 - 4 * i << " 3 4  30 30 30\n";
+    t << "surface 0.3 0.6 0.9  1 0 0  1 1\ntexture checker 1  0.9 0.9 0.9  1 0 0  1\n"
+         "polygon 4 -3 -1 -3  -3 -1 3  3 -1 3  3 -1 -3\n"
+      << "surface " << tint.r << " " << tint.g << " " << tint.b << "  0.8 0.2 0  20 1\n"
+      << "image " << image << "\nuv " << uv << "  0.1 0.2\n"
+      << "push\n  translate -1 0 0\n  sphere 0 0 0 0.8\npop\n"
+         "push\n  translate 1 0 0\n  sphere 0 0 0 0.8\npop\n";
+    return t.str();
+  }
+};
+
+// Two small PNGs in `dir`: grid.png (4 x 4) and other.png (2 x 2).
+void writeImages(const ScratchDir& dir) {
+  std::vector<std::uint8_t> rgb;
+  for (int i = 0; i < 16; ++i)
+    rgb.insert(rgb.end(), {std::uint8_t(40 + 13 * i), std::uint8_t(250 - 15 * i),
+                           std::uint8_t(i % 3 == 0 ? 230 : 20)});
+  writeImage8(dir / "grid.png", 4, 4, rgb);
+  writeImage8(dir / "other.png", 2, 2, {255, 255, 255, 0, 0, 0, 0, 0, 0, 255, 255, 255});
+}
+
+// An image is a texture like the others: its size (1 / SU, SV alike) and
+// tint (the surface colour) are one edit, one undo step, restarting the
+// render and showing the file with the edited `uv` and `surface` written in;
+// undo, reset and revert give the file's picture bit for bit; Save scene as
+// writes the edit.
+TEST(ViewControllerTexture, AnImageIsEditedUndoneResetAndSaved) {
+  ScratchDir dir;
+  writeImages(dir);
+  const ImageFile file;
+  writeFile(dir / "main.sc", file.text());
+  const Scene scene = loadScene(dir / "main.sc");
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  ASSERT_EQ(c.fileValues().textures.size(), 2u);
+  EXPECT_EQ(c.fileValues().textures[0].description(), "checker");
+  const FileTexture& image = c.fileValues().textures[1];
+  EXPECT_EQ(image.description(), "image grid.png");
+  EXPECT_EQ(image.imagePath, (dir / "grid.png").string());
+  EXPECT_TRUE(image.group.imageOnly());
+  EXPECT_EQ(image.group.materials.size(), 1u); // one material: an image needs no object space
+  EXPECT_EQ(image.place, "sphere #0 (main.sc:13)");
+  EXPECT_EQ(image.values().scale, 0.5);
+  EXPECT_EQ(image.values().base, file.tint);
+  c.update();
+  std::uint64_t restarts = c.progress().restarts;
+
+  TextureValues edited = image.values();
+  edited.scale = 0.25;
+  edited.base = Color(0.3, 0.9, 0.5);
+  c.apply(TextureEdit{1, edited});
+  expectRestarted(c, restarts);
+  EXPECT_EQ(c.edits().names(), std::vector<std::string>{"texture 2"});
+  const Material& shown = c.scene().materials[image.group.materials.front()];
+  EXPECT_EQ(shown.image.scale, Vec2(4, 8));
+  EXPECT_EQ(shown.image.offset, Vec2(0.1, 0.2));
+  ImageFile written = file;
+  written.uv = "4 8";
+  written.tint = edited.base;
+  writeFile(dir / "written.sc", written.text());
+  const std::vector<Rgb> original = renderOf(scene, options);
+  const std::vector<Rgb> editedImage = finishedImage(c);
+  EXPECT_EQ(editedImage, renderOf(loadScene(dir / "written.sc"), options));
+  EXPECT_NE(editedImage, original);
+
+  ASSERT_TRUE(c.undo());
+  expectRestarted(c, restarts);
+  EXPECT_TRUE(c.scene().materials == scene.materials);
+  EXPECT_EQ(finishedImage(c), original);
+  ASSERT_TRUE(c.redo());
+  expectRestarted(c, restarts);
+  EXPECT_EQ(finishedImage(c), editedImage);
+  c.apply(ResetTexture{1});
+  EXPECT_TRUE(c.scene().materials == scene.materials);
+  ASSERT_TRUE(c.undo());
+  c.apply(RevertToFile{});
+  EXPECT_TRUE(c.scene().materials == scene.materials);
+  c.update(); // the progress of the render the revert started
+  EXPECT_EQ(finishedImage(c), original);
+  ASSERT_TRUE(c.undo());
+  c.update();
+
+  c.saveSceneAs((dir / "view.sc").string());
+  updateUntil(c, [&] { return !c.sceneSaveBusy(); });
+  ASSERT_EQ(c.sceneSaveState(), ViewController::SceneSaveState::Saved) << c.sceneSaveMessage();
+  EXPECT_NE(slurp(dir / "view.sc").find("uv 4 8"), std::string::npos) << slurp(dir / "view.sc");
+  const Scene back = loadScene(dir / "view.sc");
+  EXPECT_EQ(renderOf(back, options), finishedImage(c));
+}
+
+// A reload keeps an image's edit over the file's new tint; a file that puts
+// another image in its place drops it.
+TEST(ViewControllerTexture, AReloadKeepsAnImagesEditAndDropsItForAnotherImage) {
+  ScratchDir dir;
+  writeImages(dir);
+  ImageFile file;
+  writeFile(dir / "main.sc", file.text());
+  const Scene scene = loadScene(dir / "main.sc");
+  const ViewOptions options = optionsFor(scene, dir / "main.sc");
+  ViewController c(scene, options);
+  TextureValues edited = c.fileValues().textures[1].values();
+  edited.scale = 0.25;
+  edited.base = Color(0.3, 0.9, 0.5);
+  c.apply(TextureEdit{1, edited});
+
+  file.tint = Color(0.2, 0.2, 0.9); // the user's tint stays over it
+  file.uv = "1 2";                  // and the user's size
+  file.lights = 2;
+  writeFile(dir / "main.sc", file.text());
+  reloadUntil(c, 2);
+  EXPECT_EQ(c.keptEdits().kept, std::vector<std::string>{"texture 2"});
+  EXPECT_TRUE(c.keptEdits().dropped.empty());
+  ImageFile expected = file;
+  expected.uv = "4 8";
+  expected.tint = edited.base;
+  writeFile(dir / "expected.sc", expected.text());
+  EXPECT_EQ(finishedImage(c), renderOf(loadScene(dir / "expected.sc"), options));
+
+  file.image = "other.png";
+  file.lights = 1;
+  writeFile(dir / "main.sc", file.text());
+  reloadUntil(c, 1);
+  EXPECT_TRUE(c.keptEdits().kept.empty());
+  EXPECT_EQ(c.keptEdits().dropped, std::vector<std::string>{"texture 2"});
+  EXPECT_EQ(c.fileValues().textures[1].description(), "image other.png");
+  EXPECT_EQ(finishedImage(c), renderOf(loadScene(dir / "main.sc"), options));
+}
+
 // ---------------------------------------------------------------------------
 // Save scene as
 

@@ -224,6 +224,33 @@ TEST(ViewE2E, TextureFromAScriptSavesWhatRenderOfTheEditedFileWrites) {
       "b.sc", "a.sc");
 }
 
+// The script's `texture` on an image alone (texture N SCALE R G B: its size
+// and tint) edits it as writing the sized `uv` and the tint's `surface` into
+// the file does: Save writes what `prism render` writes of that file.
+TEST(ViewE2E, TextureOnAnImageFromAScriptSavesWhatRenderOfTheEditedFileWrites) {
+  ScratchDir dir;
+  std::vector<std::uint8_t> rgb;
+  for (int i = 0; i < 16; ++i)
+    rgb.insert(rgb.end(), {std::uint8_t(40 + 13 * i), std::uint8_t(250 - 15 * i),
+                           std::uint8_t(i % 3 == 0 ? 230 : 20)});
+  ASSERT_TRUE(writePicture8(dir / "grid.png", 4, 4, rgb));
+  const auto imaged = [](const std::string& surface, const std::string& uv) {
+    return "eye 0 1.5 6\nlookat 0 0.3 0\nfov 40\nresolution 80 60\n"
+           "light 3 4 4  40 38 34\n"
+           "surface " +
+           surface + "  0.8 0.2 0  40 1\nimage grid.png\nuv " + uv +
+           "  0.1 0.2\n"
+           "sphere -0.8 0.3 0 0.8\n"
+           "polygon 4  -6 -0.5 -6  -6 -0.5 6  6 -0.5 6  6 -0.5 -6\n";
+  };
+  writeFile(dir / "a.sc", imaged("0.9 0.85 0.8", "0.5 0.25"));
+  writeFile(dir / "b.sc", imaged("0.2 0.3 0.6", "2 1"));
+  expectSaveIsTheEditedRender(dir.path(),
+                              "wait pass1\ntexture 1 0.5 0.2 0.3 0.6\nwait done\nsave saved.tiff\n"
+                              "quit\n",
+                              "b.sc", "a.sc");
+}
+
 // The script's `no-aa on` switches antialiasing off as `prism render --no-aa`
 // does: Save writes its picture, which is not the antialiased one.
 TEST(ViewE2E, NoAntialiasingFromAScriptSavesWhatRenderNoAaWrites) {

@@ -587,7 +587,15 @@ TEST_F(ViewInput, EveryOtherControlByMouse) {
   ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Open/Cancel").has_value(); }));
   ASSERT_TRUE(app_.click("Open/Cancel"));
   EXPECT_TRUE(app_.waitFor([&] { return !app_.widget("Open/Cancel").has_value(); }));
-  writeFile(app_.dir() / "third.sc", sceneText(3));
+  // The third scene adds an image on a sphere (a 2 x 2 PNG): texture 2.
+  const std::vector<std::uint8_t> rgb = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+  auto png = OIIO::ImageOutput::create((app_.dir() / "grid.png").string());
+  ASSERT_TRUE(png &&
+              png->open((app_.dir() / "grid.png").string(),
+                        OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)) &&
+              png->write_image(OIIO::TypeDesc::UINT8, rgb.data()) && png->close());
+  writeFile(app_.dir() / "third.sc", sceneText(3) + "surface 1 1 1  0.8 0.2 0  20 1\n"
+                                                    "image grid.png\nsphere 1 0.3 -0.5 0.6\n");
   ASSERT_TRUE(app_.tap("ctrl+o"));
   ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Open/path").has_value(); }));
   ASSERT_TRUE(app_.click("Open/path"));
@@ -597,6 +605,14 @@ TEST_F(ViewInput, EveryOtherControlByMouse) {
   ASSERT_TRUE(app_.waitForValue("Open/path", (app_.dir() / "third.sc").string()));
   ASSERT_TRUE(app_.click("Open/Open"));
   EXPECT_TRUE(app_.waitFor([&] { return app_.widget("Lights/light 3/light 3").has_value(); }));
+  // An image: its size and its tint, and no value-1 colour.
+  ASSERT_TRUE(app_.waitFor([&] { return app_.widget("Textures/texture 2/scale").has_value(); }));
+  EXPECT_FALSE(app_.widget("Textures/texture 2/texture colour").has_value());
+  const std::string size = app_.value("Textures/texture 2/scale");
+  changesOnClick("Textures/texture 2/scale", 0.2);
+  changesOnDrag("Textures/texture 2/surface colour");
+  ASSERT_TRUE(app_.click("Textures/texture 2/reset"));
+  EXPECT_TRUE(app_.waitForValue("Textures/texture 2/scale", size));
 }
 
 // The controls docs/previewer.md lists are the window's: every documented

@@ -3,6 +3,9 @@
 // actions to complete and enforces the timeout.
 #include "viewer/view_script.h"
 
+#include "core/io/image_io.h"
+#include "tests/test_files.h"
+
 #include <gtest/gtest.h>
 
 namespace prism {
@@ -165,6 +168,52 @@ TEST(ViewScript, ParsesTextureAndReportsItsErrors) {
             "s.txt:8:1: error: texture: expected N SCALE R G B [R0 G0 B0], got 6 arguments");
   EXPECT_EQ(errors[8].format(),
             "s.txt:9:25: error: texture: expected N SCALE R G B [R0 G0 B0], got 9 arguments");
+}
+
+// A `texture` action over the values shown: for a procedural texture (with
+// an image or not) the value-1 colour and, if given, the value-0 one; for an
+// image alone its size and tint (texture N SCALE R G B), and the form with
+// R0 G0 B0 is refused. (And what the panel's rows say each texture is.)
+TEST(ViewScript, TextureActionsEditTexturesAndImages) {
+  test::ScratchDir dir;
+  writeImage8(dir / "a.png", 1, 1, {200, 100, 50});
+  const Scene scene = parseScene("surface 0.5 0.5 0.5  1 0 0  1 1\n"
+                                 "texture checker 2  0.1 0.2 0.3  1 0 0  1\nsphere 0 0 0 1\n"
+                                 "surface 0.8 0.6 0.4  1 0 0  1 1\nimage a.png\nuv 2 2 0 0\n"
+                                 "sphere 3 0 0 1\n"
+                                 "texture marble 1  0.1 0.1 0.1  1 0 0  1\nsphere 6 0 0 1\n",
+                                 (dir / "t.sc").string());
+  const FileValues file = FileValues::of(scene);
+  ASSERT_EQ(file.textures.size(), 3u);
+  EXPECT_EQ(file.textures[0].description(), "checker");
+  EXPECT_EQ(file.textures[1].description(), "image a.png");
+  EXPECT_EQ(file.textures[2].description(), "marble and image a.png");
+  UserEdits edits;
+  edits.textures[1] = {0.25, Color(1.0), Color(0.9)}; // shown: the image already edited
+  const auto action = [](const std::string& line) { return parseScript(line, "s.txt").at(0); };
+
+  const TextureEdit pattern = textureEditOf(action("texture 1 4 1 0 0\n"), file, edits);
+  EXPECT_EQ(pattern.index, 0u);
+  EXPECT_EQ(pattern.values, (TextureValues{4, Color(1, 0, 0), Color(0.5)}));
+  EXPECT_EQ(textureEditOf(action("texture 1 4 1 0 0  0 1 0\n"), file, edits).values,
+            (TextureValues{4, Color(1, 0, 0), Color(0, 1, 0)}));
+  const TextureEdit image = textureEditOf(action("texture 2 1.5 0 0 1\n"), file, edits);
+  EXPECT_EQ(image.index, 1u);
+  EXPECT_EQ(image.values, (TextureValues{1.5, Color(1.0), Color(0, 0, 1)}));
+  const auto message = [&](const std::string& line) {
+    try {
+      textureEditOf(action(line), file, edits);
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("texture 2 1 1 1 1  0 0 1\n"),
+            "texture 2 is an image: give SCALE R G B (its size and the surface colour)");
+  // A texture with an image takes both forms, as a texture.
+  EXPECT_EQ(textureEditOf(action("texture 3 2 1 0 0  0 1 0\n"), file, edits).values,
+            (TextureValues{2, Color(1, 0, 0), Color(0, 1, 0)}));
+  EXPECT_EQ(message("texture 4 1 1 1 1\n"), "there is no texture 4 (the scene has 3)");
 }
 
 TEST(ViewScript, ParsesPrintSweep) {

@@ -202,15 +202,18 @@ void tooltip(const char* text) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
-// Each texture of the scene (a `texture` line, on every primitive it
-// covers): its scale and the colours of its two ends, as one edit.
+// Each texture of the scene (a `texture` or `image` line, on every primitive
+// it covers): its scale and colours, as one edit. An image alone has no
+// value-1 colour: its scale is its size and the surface colour its tint.
 void texturesSection(ViewController& c, WindowState& state) {
   const FileValues& file = c.fileValues();
   for (std::size_t i = 0; i < file.textures.size(); ++i) {
     const FileTexture& texture = file.textures[i];
+    const bool imageOnly = texture.group.imageOnly();
+    const bool withImage = texture.group.image.active();
     const std::string name = "texture " + std::to_string(i + 1);
     const ui::Scope scope(name);
-    dimText(name + ": " + std::string(textureKindName(texture.group.kind)) +
+    dimText(name + ": " + texture.description() +
             (texture.place.empty() ? "" : ", on " + texture.place));
     TextureValues values = c.edits().textureOver(file, i);
     bool changed = false;
@@ -223,12 +226,27 @@ void texturesSection(ViewController& c, WindowState& state) {
       values.scale = double(scale);
       changed = true;
     }
-    tooltip("the pattern's size in the object's units (the texture line's SCALE)");
-    changed |= pickColour("texture colour", values.color);
-    tooltip("the colour where the pattern is 1 (the texture line's R G B)");
+    if (imageOnly)
+      tooltip("the size of one repeat of the image in the surface's coordinates\n"
+              "(1 / SU of the uv line; SV follows, so the image keeps its aspect)");
+    else if (withImage)
+      tooltip("the pattern's size in the object's units (the texture line's SCALE);\n"
+              "the image is sized with it (the uv line's SU and SV)");
+    else
+      tooltip("the pattern's size in the object's units (the texture line's SCALE)");
+    if (!imageOnly) {
+      changed |= pickColour("texture colour", values.color);
+      tooltip("the colour where the pattern is 1 (the texture line's R G B)");
+    }
     changed |= pickColour("surface colour", values.base);
-    tooltip("the colour where the pattern is 0: the material's own\n"
-            "(the surface line's R G B)");
+    if (imageOnly)
+      tooltip("the colour the image multiplies: the material's own\n"
+              "(the surface line's R G B; white shows the image as it is)");
+    else
+      tooltip(withImage ? "the colour where the pattern is 0: the material's own\n"
+                          "(the surface line's R G B); the image multiplies both ends"
+                        : "the colour where the pattern is 0: the material's own\n"
+                          "(the surface line's R G B)");
     if (changed) edit(c, state, [&] { c.apply(TextureEdit{i, values}); });
     if (ui::button("reset")) c.apply(ResetTexture{i});
     tooltip("back to the file's scale and colours for this texture");

@@ -1,6 +1,9 @@
 #include "scene_edit.h"
 
+#include "core/texture/image_library.h"
+
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 namespace prism {
@@ -55,20 +58,38 @@ FileValues FileValues::of(const Scene& scene) {
   FileValues file{scene.camera, scene.ambient, scene.fog, scene.lights, {}};
   const std::vector<TextureGroup> groups = textureGroups(scene);
   std::vector<std::string> places = placesOf(scene, groups);
-  for (std::size_t g = 0; g < groups.size(); ++g)
-    file.textures.push_back(
-        {groups[g], scene.materials[groups[g].materials.front()], std::move(places[g])});
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    FileTexture texture{groups[g], scene.materials[groups[g].materials.front()],
+                        std::move(places[g]), "", ImageEncoding::Auto};
+    if (groups[g].image.active() && scene.images) {
+      const ImageInfo& info = scene.images->info(groups[g].image.image);
+      texture.imagePath = info.path;
+      texture.imageEncoding = info.asked;
+    }
+    file.textures.push_back(std::move(texture));
+  }
   return file;
+}
+
+std::string FileTexture::description() const {
+  const std::string image = "image " + std::filesystem::path(imagePath).filename().string();
+  if (group.imageOnly()) return image;
+  const std::string kind(textureKindName(group.kind));
+  return group.image.active() ? kind + " and " + image : kind;
 }
 
 std::vector<std::optional<std::size_t>> renumberTextures(const FileValues& before,
                                                          const FileValues& after) {
   std::vector<std::optional<std::size_t>> to(before.textures.size());
   std::vector<bool> taken(after.textures.size(), false);
+  // An image is an index into its own scene's library: compare the files.
+  const auto alike = [](const FileTexture& a, const FileTexture& b) {
+    return textureIdentity(a.material) == textureIdentity(b.material) &&
+           a.imagePath == b.imagePath && a.imageEncoding == b.imageEncoding;
+  };
   for (std::size_t i = 0; i < before.textures.size(); ++i) {
-    const Material identity = textureIdentity(before.textures[i].material);
     for (std::size_t j = 0; j < after.textures.size(); ++j) {
-      if (taken[j] || !(textureIdentity(after.textures[j].material) == identity)) continue;
+      if (taken[j] || !alike(before.textures[i], after.textures[j])) continue;
       to[i] = j; // textures alike pair off in order
       taken[j] = true;
       break;
@@ -163,10 +184,16 @@ SessionEdit changeToShow(const UserEdits& edits, const FileValues& file, const S
   for (std::size_t i = 0; i < shown.lights.size(); ++i)
     if (const Light light = edits.lightOver(file, i); !same(light, shown.lights[i]))
       change.lights.emplace_back(i, light);
+  // Materials compared, not values read back (an image's size read back may
+  // be a rounding off the one put in): what the edit makes of the first
+  // member as the file gives it, against the shown one.
   for (std::size_t i = 0; i < file.textures.size(); ++i) {
+    const FileTexture& texture = file.textures[i];
     const TextureValues values = edits.textureOver(file, i);
-    const Material& shownMaterial = shown.materials[file.textures[i].group.materials.front()];
-    if (!(values == textureValuesOf(shownMaterial))) change.textures.emplace_back(i, values);
+    Material wanted = texture.material;
+    setTextureValues(wanted, values, texture.group);
+    if (!(wanted == shown.materials[texture.group.materials.front()]))
+      change.textures.emplace_back(i, values);
   }
   return change;
 }

@@ -61,13 +61,19 @@ using SceneEdit = std::variant<SettingsEdit, LightEdit, AmbientEdit, FogEdit, Te
 
 // A texture as the files give it: its group of materials (indices into
 // Scene::materials, as RenderSession::textureGroups() has them), the first of
-// them as the file says it, and where it is first used.
+// them as the file says it, where it is first used, and the file of its
+// image if it has one.
 struct FileTexture {
   TextureGroup group;
   Material material;
-  std::string place; // "sphere #3 (scene.sc:12)", or "" (only CSG operands use it)
+  std::string place;             // "sphere #3 (scene.sc:12)", or "" (only CSG operands use it)
+  std::string imagePath;         // as the scene resolved it (ImageInfo::path); "" without an image
+  ImageEncoding imageEncoding{}; // as the `image` line asked for it
 
   TextureValues values() const { return textureValuesOf(material); }
+  // What it is, for the panel: "marble", "image tiles.png" (the file's name),
+  // "marble and image tiles.png".
+  std::string description() const;
 };
 
 // The scene values as the files say them: what resets go back to.
@@ -84,9 +90,11 @@ struct FileValues {
 };
 
 // Where each texture of `before` is in `after` (the files re-read): the
-// texture of the same kind, coefficients, surface and absorption (its
-// scale and colours may differ: those are what an edit holds), counted in
-// order among the textures alike; none when `after` has no such texture.
+// texture of the same kind, coefficients, surface and absorption, and the
+// same image file, encoding, wrap, filtering and `uv` offset (its scale and
+// colours, and the image's `uv` scale, may differ: those are what an edit
+// holds), counted in order among the textures alike; none when `after` has
+// no such texture.
 std::vector<std::optional<std::size_t>> renumberTextures(const FileValues& before,
                                                          const FileValues& after);
 

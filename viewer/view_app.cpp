@@ -246,7 +246,6 @@ private:
   void takeScreenshot(int width, int height);
   RenderSettings edited(const ScriptAction& a) const;
   std::size_t lightIndex(const ScriptAction& a) const;
-  void editTexture(const ScriptAction& a);
 
   GLFWwindow* window_;
   std::unique_ptr<ViewController> controller_;
@@ -434,23 +433,6 @@ std::size_t ViewApp::lightIndex(const ScriptAction& a) const {
   return std::size_t(a.index - 1);
 }
 
-// texture N SCALE R G B [R0 G0 B0]: over the texture's values as shown.
-void ViewApp::editTexture(const ScriptAction& a) {
-  const std::size_t count = controller_->fileValues().textures.size();
-  if (a.index < 1 || std::size_t(a.index) > count)
-    throw std::runtime_error("there is no texture " + std::to_string(a.index) + " (the scene has " +
-                             std::to_string(count) + ")");
-  const std::size_t i = std::size_t(a.index - 1);
-  TextureValues values = controller_->edits().textureOver(controller_->fileValues(), i);
-  const auto colour = [&](std::size_t first) {
-    return Color(a.values[first], a.values[first + 1], a.values[first + 2]);
-  };
-  values.scale = a.values[0];
-  values.color = colour(1);
-  if (a.values.size() == 7) values.base = colour(4);
-  controller_->apply(TextureEdit{i, values});
-}
-
 void ViewApp::start(const ScriptAction& a) {
   const auto vec = [&](std::size_t first) {
     return Vec3(a.values[first], a.values[first + 1], a.values[first + 2]);
@@ -474,7 +456,9 @@ void ViewApp::start(const ScriptAction& a) {
     controller_->apply(LightEdit{i, light});
     break;
   }
-  case ScriptOp::Texture: editTexture(a); break;
+  case ScriptOp::Texture:
+    controller_->apply(textureEditOf(a, controller_->fileValues(), controller_->edits()));
+    break;
   case ScriptOp::Orbit:
     controller_->apply(CameraEdit{orbit(camera, a.values[0], a.values[1])});
     break;

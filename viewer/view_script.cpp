@@ -330,6 +330,30 @@ std::vector<ScriptAction> loadScript(const std::string& path) {
   return parseScript(text.str(), path);
 }
 
+TextureEdit textureEditOf(const ScriptAction& a, const FileValues& file, const UserEdits& edits) {
+  const std::size_t count = file.textures.size();
+  if (a.index < 1 || std::size_t(a.index) > count)
+    throw std::runtime_error("there is no texture " + std::to_string(a.index) + " (the scene has " +
+                             std::to_string(count) + ")");
+  const std::size_t i = std::size_t(a.index - 1);
+  const bool imageOnly = file.textures[i].group.imageOnly();
+  if (imageOnly && a.values.size() == 7)
+    throw std::runtime_error("texture " + std::to_string(a.index) +
+                             " is an image: give SCALE R G B (its size and the surface colour)");
+  TextureValues values = edits.textureOver(file, i);
+  const auto colour = [&](std::size_t first) {
+    return Color(a.values[first], a.values[first + 1], a.values[first + 2]);
+  };
+  values.scale = a.values[0];
+  if (imageOnly) {
+    values.base = colour(1);
+  } else {
+    values.color = colour(1);
+    if (a.values.size() == 7) values.base = colour(4);
+  }
+  return {i, values};
+}
+
 bool ScriptRunner::step(ScriptHost& host, Clock::time_point now) {
   while (next_ < actions_.size()) {
     const ScriptAction& action = actions_[next_];

@@ -16,7 +16,9 @@
 //   texture N SCALE R G B [R0 G0 B0]
 //                            texture N's (from 1) scale and value-1 colour, as
 //                            its `texture` line gives them; R0 G0 B0 the
-//                            value-0 colour, its `surface` line's
+//                            value-0 colour, its `surface` line's. For an
+//                            image alone, texture N SCALE R G B: its size
+//                            (1 / SU) and the `surface` colour tinting it
 //   orbit YAW PITCH          degrees;  pan DX DY (pixels);  zoom FACTOR;  reset
 //   overlay on|off | markers on|off
 //   exposure auto|lock       unlock / lock the exposure;  ev STOPS  its offset
@@ -35,6 +37,8 @@
 // The parser is pure; running goes through a ScriptHost so it can be tested
 // without a window.
 #pragma once
+
+#include "scene_edit.h"
 
 #include "core/io/scene_parser.h"
 
@@ -94,6 +98,15 @@ struct ScriptAction {
 // listing every bad line.
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name);
 std::vector<ScriptAction> loadScript(const std::string& path);
+
+// What a `texture` action (texture N SCALE R G B [R0 G0 B0]) changes: texture
+// N's values as shown (`edits` over `file`) with the action's put in. For an
+// image alone, which has no value-1 colour, the form is texture N SCALE R G
+// B: its size and the surface colour that tints it. Throws
+// std::runtime_error for a texture the scene does not have, and for the form
+// with R0 G0 B0 on an image alone.
+TextureEdit textureEditOf(const ScriptAction& action, const FileValues& file,
+                          const UserEdits& edits);
 
 // What a script drives. `start` performs an action once; `finished` is asked
 // once a frame until it says the action is complete (a wait is reached, a save

@@ -144,7 +144,7 @@ void RenderSession::apply(const SessionEdit& edit) {
     scene_->lights[index] = light;
   for (const auto& [index, values] : edit.textures)
     for (const std::uint32_t m : textureGroups_[index].materials)
-      setTextureValues(scene_->materials[m], values);
+      setTextureValues(scene_->materials[m], values, textureGroups_[index]);
   ++restarts_;
   startWorkers(onlyPass2 && pass1Complete);
 }

@@ -84,9 +84,10 @@ struct SessionEdit {
   // (each render generation's tracers decide from the scene whether to fog).
   std::optional<Fog> fog{};
   std::vector<std::pair<std::size_t, Light>> lights{}; // 0-based index, new value
-  // A texture's scale and colours, on every material of its group: the
-  // index is into RenderSession::textureGroups(). The file's values put back
-  // give the file's picture, bit for bit.
+  // A texture's scale and colours (a procedural texture's, an image's size
+  // and tint, or both), on every material of its group: the index is into
+  // RenderSession::textureGroups(). The file's values put back give the
+  // file's picture, bit for bit.
   std::vector<std::pair<std::size_t, TextureValues>> textures{};
 
   bool empty() const {

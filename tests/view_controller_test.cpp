@@ -325,6 +325,9 @@ bool sameLight(const Light& a, const Light& b) {
 
 // Lets the render finish; returns the picture the window shows then.
 std::vector<Rgb> finishedImage(ViewController& c) {
+  // One update first: after an edit, undo or revert the progress snapshot
+  // still says Done for the picture before it until the next update.
+  c.update(ViewController::Clock::now());
   updateUntil(c, [&] { return c.progress().phase == SessionPhase::Done; });
   return c.image().radiance;
 }

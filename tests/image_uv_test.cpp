@@ -15,6 +15,7 @@
 #include "core/scene/scene_builder.h"
 
 #include "test_files.h"
+#include "tests/obj_fixture.h"
 #include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
@@ -185,29 +186,8 @@ end
 
 // --- OBJ vt and MTL map_Kd
 
-class ObjUv : public ::testing::Test {
+class ObjUv : public test::ObjFiles {
 protected:
-  fs::path write(const std::string& name, const std::string& text) {
-    test::writeFile(dir_ / name, text);
-    return dir_ / name;
-  }
-
-  // The messages of loading `obj` (and `mtl` as t.mtl), the scratch
-  // directory shown as DIR.
-  std::string errorsOf(const std::string& obj, const std::string& mtl = "") {
-    if (!mtl.empty()) write("t.mtl", mtl);
-    try {
-      loadObj(write("t.obj", obj));
-    } catch (const SceneError& e) {
-      std::string text = e.what();
-      const std::string dir = dir_.string() + "/";
-      for (std::size_t at; (at = text.find(dir)) != std::string::npos;)
-        text.replace(at, dir.size(), "DIR/");
-      return text;
-    }
-    return "no error";
-  }
-
   // A 2x2 PNG: top row red (255, 0, 0) and green (0, 128, 0); bottom row
   // blue (0, 0, 64) and (255, 128, 64).
   fs::path writeTexture(const std::string& name) {
@@ -216,9 +196,6 @@ protected:
     writeImage8(path, 2, 2, {255, 0, 0, 0, 128, 0, 0, 0, 64, 255, 128, 64});
     return path;
   }
-
-  test::ScratchDir scratch_;
-  const fs::path dir_ = scratch_.path();
 };
 
 // The sRGB decoding of an 8-bit value, written out.

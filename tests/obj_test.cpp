@@ -7,6 +7,7 @@
 #include "core/render/tracer.h"
 
 #include "test_files.h"
+#include "tests/obj_fixture.h"
 #include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
@@ -21,32 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Obj : public ::testing::Test {
-protected:
-  fs::path write(const std::string& name, const std::string& text) {
-    test::writeFile(dir_ / name, text);
-    return dir_ / name;
-  }
-
-  // The messages of loading `obj` (and `mtl` as t.mtl), the temporary
-  // directory shown as DIR.
-  std::string errorsOf(const std::string& obj, const std::string& mtl = "") {
-    if (!mtl.empty()) write("t.mtl", mtl);
-    try {
-      loadObj(write("t.obj", obj));
-    } catch (const SceneError& e) {
-      std::string text = e.what();
-      const std::string dir = dir_.string() + "/";
-      for (std::size_t at; (at = text.find(dir)) != std::string::npos;)
-        text.replace(at, dir.size(), "DIR/");
-      return text;
-    }
-    return "no error";
-  }
-
-  test::ScratchDir scratch_;
-  const fs::path dir_ = scratch_.path();
-};
+using Obj = test::ObjFiles;
 
 // Every index a triangle holds is one the renderer follows without checking.
 void expectIndicesInBounds(const Scene& s) {

@@ -48,10 +48,14 @@ Scene writeMainScene(const ScratchDir& dir) {
   return loadScene(dir / "main.sc");
 }
 
-// Calls update() until `done` holds (each call is one "frame").
+// Calls update() until `done` holds (each call is one "frame"). Bounded by
+// time, not by a count of frames: a reload or a render runs on other threads,
+// which on a loaded machine (the sanitizer suite, two tests at once) can take
+// longer than any fixed number of quick frames.
 template <class Done> void updateUntil(ViewController& c, Done done) {
   auto now = ViewController::Clock::now();
-  for (int frame = 0; frame < 200000 && !done(); ++frame) {
+  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  while (!done() && std::chrono::steady_clock::now() < giveUp) {
     now += std::chrono::milliseconds(20); // the controller's clock, for its file polling
     c.update(now);
     std::this_thread::yield();

@@ -5,6 +5,8 @@
 #include "sweep_command.h"
 #include "view_command.h"
 
+#include "process_launch.h"
+
 #include "core/io/pending_file.h"
 
 #include <CLI/CLI.hpp>
@@ -64,18 +66,39 @@ int runPrism(int argc, char** argv) {
   // Commands report their own errors; what reaches here (memory exhausted on
   // any thread, say) still ends with a message and the failure status, not
   // with std::terminate and a core dump.
+  // Under an MPI launcher render and sweep run as one job over the processes
+  // (docs/distributed.md); the other commands are for one process.
+  std::unique_ptr<ProcessGroup> group;
+  if (startedByMpiLauncher()) {
+    if (!renderCmd->parsed() && !sweepCmd->parsed()) {
+      std::cerr << "prism: error: only `prism render` and `prism sweep` run under an MPI "
+                   "launcher\n";
+      return kExitUsage;
+    }
+    std::string problem;
+    group = joinProcessGroup(problem);
+    if (!group) {
+      std::cerr << "prism: error: " << problem << "\n";
+      return kExitFailure;
+    }
+  }
+  // A failure that reaches here on one process of a job ends them all: the
+  // others may be waiting for it.
+  auto fail = [&](const std::string& message) {
+    std::cerr << "prism: error: " << message << "\n";
+    if (group && group->size() > 1) group->abort(kExitFailure);
+    return kExitFailure;
+  };
   try {
-    if (renderCmd->parsed()) return runRenderCommand(render);
+    if (renderCmd->parsed()) return runRenderCommand(render, group.get());
     if (viewCmd->parsed()) return runViewCommand(view);
     if (benchCmd->parsed()) return runBenchCommand(bench);
     if (convertCmd->parsed()) return runConvertCommand(convert);
-    if (sweepCmd->parsed()) return runSweepCommand(sweep);
+    if (sweepCmd->parsed()) return runSweepCommand(sweep, group.get());
   } catch (const std::bad_alloc&) {
-    std::cerr << "prism: error: out of memory\n";
-    return kExitFailure;
+    return fail("out of memory");
   } catch (const std::exception& error) {
-    std::cerr << "prism: error: " << error.what() << "\n";
-    return kExitFailure;
+    return fail(error.what());
   }
   return kExitUsage;
 }

@@ -2,6 +2,7 @@
 
 #include "cli_options.h"
 #include "load_scene.h"
+#include "process_launch.h"
 #include "progress.h"
 
 #include "core/io/image_io.h"
@@ -174,22 +175,37 @@ std::optional<std::string> imageMemoryProblem(const RenderSettings& settings,
                            std::to_string(settings.height) + " " + what);
 }
 
-int runRenderCommand(const RenderCommandOptions& o) {
+int runRenderCommand(const RenderCommandOptions& o, ProcessGroup* group) {
+  // Under MPI every process runs this function; rank 0 speaks for the job
+  // (progress, warnings, errors, the files) and the others stay quiet. Where
+  // a process could fail alone, the processes agree before going on, so none
+  // waits for another that has left.
+  const bool speaks = !group || group->rank() == 0;
+  QuietStderr quietRank(!speaks);
+  auto agree = [&](bool ok) {
+    if (!group) return ok;
+    const std::optional<ProcessGroup::Failure> failure = group->firstFailure(ok, quietRank.text());
+    if (failure && speaks && failure->rank != 0)
+      std::cerr << "prism: error: on rank " << failure->rank << ":\n" << failure->message;
+    return !failure;
+  };
+
   if (const std::optional<std::string> problem = cameraOptionsProblem(o)) {
     std::cerr << "prism: error: " << *problem << "\n";
     return kExitUsage;
   }
   // Every output is checked before any work: a typo in a folder name must not
   // cost a render, or leave a picture without its statistics.
-  const bool writable = succeeds([&] {
+  const bool writable = !speaks || succeeds([&] {
     if (o.pixel.empty()) checkWritable(o.output);
     if (!o.statsJson.empty()) checkWritableFile(o.statsJson);
   });
-  if (!writable) return kExitFailure;
+  if (!agree(writable)) return kExitFailure;
 
+  // Every process reads the scene itself (docs/distributed.md#loading).
   const auto loadStart = Clock::now();
   std::optional<Scene> loaded = loadSceneReporting(o.scene);
-  if (!loaded) return kExitUsage;
+  if (!agree(loaded.has_value())) return kExitUsage;
   if (const std::optional<std::string> problem = applyCameraOptions(o, loaded->camera)) {
     std::cerr << "prism: error: " << *problem << "\n";
     return kExitUsage;
@@ -205,24 +221,23 @@ int runRenderCommand(const RenderCommandOptions& o) {
     return kExitUsage;
   }
   if (o.pixel.empty()) {
-    if (const std::optional<std::string> problem =
-            imageMemoryProblem(settings, kRenderBytesPerPixel, "render")) {
-      std::cerr << "prism: error: " << *problem << "\n";
-      return kExitFailure;
-    }
+    const std::optional<std::string> problem =
+        imageMemoryProblem(settings, kRenderBytesPerPixel, "render");
+    if (problem) std::cerr << "prism: error: " << *problem << "\n";
+    if (!agree(!problem)) return kExitFailure;
   }
 
   const auto buildStart = Clock::now();
   const auto accel = makeAccel(scene, o.accel);
   const double buildSeconds = secondsSince(buildStart);
   if (!o.pixel.empty()) {
-    std::cout << pixelRayTreeText(scene, *accel, settings, o.pixel[0], o.pixel[1]);
+    if (speaks) std::cout << pixelRayTreeText(scene, *accel, settings, o.pixel[0], o.pixel[1]);
     return kExitOk;
   }
 
   // Before the render, which it does not change: a warning when pass 1 looks
   // endless (a deep render only; nothing is traced for depth <= 8, or with -q).
-  if (!o.quiet) {
+  if (!o.quiet && speaks) {
     const WorkEstimate estimate = estimateWork(scene, *accel, settings);
     if (estimate.explodes)
       std::cerr << "prism: warning: " << workWarning(estimate, settings) << "\n";
@@ -233,11 +248,30 @@ int runRenderCommand(const RenderCommandOptions& o) {
   const auto renderStart = Clock::now();
   RenderResult result;
   {
-    ProgressReporter reporter(!o.quiet);
-    result = render(scene, *accel, settings, [&](const RenderProgress& p) { reporter.update(p); });
+    ProgressReporter reporter(!o.quiet && speaks);
+    ThreadPoolExecutor local(settings.threads);
+    if (group) {
+      const std::unique_ptr<DistributedExecutor> executor = group->makeExecutor(local);
+      executor->setGroupProgress([&](int pass, double fraction) {
+        reporter.update({pass, 0.5 * fraction + (pass == 2 ? 0.5 : 0.0)});
+      });
+      result = render(scene, *accel, settings, *executor);
+      stats.ranks = group->gatherStats({group->rank(), hostName(), settings.threads,
+                                        executor->itemsRunHere(), executor->raysHere(),
+                                        processCpuSeconds() - cpuStart});
+    } else {
+      result = render(scene, *accel, settings, local,
+                      [&](const RenderProgress& p) { reporter.update(p); });
+    }
   }
   stats.wallSeconds = secondsSince(renderStart);
   stats.cpuSeconds = processCpuSeconds() - cpuStart;
+  if (!speaks) return kExitOk; // rank 0 holds the picture and writes it
+  if (!stats.ranks.empty()) {
+    stats.cpuSeconds = 0.0;
+    for (const RankStats& r : stats.ranks)
+      stats.cpuSeconds += r.cpuSeconds;
+  }
 
   const bool written =
       succeeds([&] { writePicture(o.output, result, isFloatFormat(o.output) || o.floatTiff); });

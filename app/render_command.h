@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/accel/accel.h"
+#include "core/render/process_group.h"
 #include "core/render/renderer.h"
 #include "core/scene/camera.h"
 #include "core/scene/scene.h"
@@ -74,6 +75,8 @@ std::optional<std::string> imageMemoryProblem(const RenderSettings& settings,
 // Adds the `render` subcommand to `app`, filling `options`.
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options);
 
-int runRenderCommand(const RenderCommandOptions& options);
+// `group`: the processes of an MPI job rendering the picture together
+// (docs/distributed.md), or null for a render on this process alone.
+int runRenderCommand(const RenderCommandOptions& options, ProcessGroup* group = nullptr);
 
 } // namespace prism

@@ -137,7 +137,8 @@ CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& o) {
   return command;
 }
 
-int runSweepCommand(const SweepCommandOptions& o) {
+int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
+  (void)group; // distributed sweeps: not yet
   std::optional<Scene> loaded = loadSceneReporting(o.scene);
   if (!loaded) return kExitUsage;
   // The folder before any rendering, so that a typo in its name costs no

@@ -4,6 +4,8 @@
 // DIR/sweep.csv, DIR/sweep.json, DIR/reference.png and the plots.
 #pragma once
 
+#include "core/render/process_group.h"
+
 #include <string>
 #include <vector>
 
@@ -27,6 +29,8 @@ inline constexpr int kQuickSweepSide = 128;
 
 CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& options);
 
-int runSweepCommand(const SweepCommandOptions& options);
+// `group`: the processes of an MPI job sharing the sweep's settings
+// (docs/distributed.md), or null for a sweep on this process alone.
+int runSweepCommand(const SweepCommandOptions& options, ProcessGroup* group = nullptr);
 
 } // namespace prism

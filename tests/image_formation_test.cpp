@@ -183,8 +183,10 @@ TEST(AntialiasBlock, SupersamplesOnlyPixelsAtTheEdgeAndKeepsPassOne) {
   EXPECT_EQ(film.centre[film.index(2, 0)], Rgb(1.0f));
   const double avgmax = averageMax(film.centre);
   EXPECT_DOUBLE_EQ(avgmax, 0.5);
+  std::vector<std::uint8_t> marks(film.pixelCount(), 0);
+  markForSupersampling(all, film, avgmax, 0.1, marks);
   std::vector<Sample> means;
-  antialiasBlock(tracer, camera, all, film, avgmax, 0.1, false, means, counts);
+  antialiasBlock(tracer, camera, all, film, marks, false, means, counts);
   storeSupersampled(means, film);
   EXPECT_EQ(means.size(), 8u); // columns 1 and 2, every row
   EXPECT_EQ(counts.eyeAntialias, 16u * 8u);

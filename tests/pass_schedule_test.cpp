@@ -42,7 +42,16 @@ public:
       work(items[i], int(i % std::size_t(workerCount_)));
     }
   }
-  void completePass1(Film&) override { log.push_back("completePass1"); }
+  void forEachHere(int itemCount, const ItemWork& work, const StopCheck& stop) override {
+    log.push_back("forEachHere");
+    for (int item = 0; item < itemCount && !(stop && stop()); ++item)
+      work(item, item % workerCount_);
+  }
+  void sumOverProcesses(ExactSum&) override { log.push_back("sumOverProcesses"); }
+  void completePass1(Film&, std::span<const Tile>, const std::vector<std::uint8_t>&) override {
+    log.push_back("completePass1");
+  }
+  void shareMarks(std::vector<std::uint8_t>&) override { log.push_back("shareMarks"); }
   void completeRender(Film&, RayCounts&) override { log.push_back("completeRender"); }
 
 private:
@@ -133,8 +142,10 @@ TEST(PassSchedule, TheSinkHearsEveryTileInTheOrderOfThePasses) {
   expected.insert(expected.end(), std::size_t(tiles), "tile pass 2");
   expected.push_back("done");
   EXPECT_EQ(sink.events, expected);
-  EXPECT_EQ(executor.log, (std::vector<std::string>{"forEach", "forEach", "forEach", "forEach",
-                                                    "completePass1", "forEach", "completeRender"}));
+  EXPECT_EQ(executor.log,
+            (std::vector<std::string>{"forEach", "forEach", "forEach", "forEach",
+                                      "sumOverProcesses", "completePass1", "forEachHere",
+                                      "shareMarks", "forEach", "completeRender"}));
 
   // Each pixel centre once, each supersampled pixel once; the tiles' counts
   // add up to the run's.
@@ -214,8 +225,8 @@ TEST(PassSchedule, KeepingPassOneTracesPassTwoOnly) {
 }
 
 // One of two processes: it traces the even tiles only, and at reduction
-// point 1 receives the centres of the odd ones (here from a finished render,
-// standing for the other process).
+// point 1 receives the centres of the odd ones and their part of avgmax's
+// sum (here from a finished render, standing for the other process).
 class HalfExecutor final : public SequentialExecutor {
 public:
   HalfExecutor(const Film* others, const std::vector<Tile>& tiles)
@@ -223,7 +234,16 @@ public:
     for (int i = 0; i < int(tiles.size()); i += 2)
       order.push_back(i);
   }
-  void completePass1(Film& film) override {
+  void sumOverProcesses(ExactSum& sum) override {
+    if (!others_) return;
+    for (std::size_t t = 1; t < tiles_.size(); t += 2)
+      for (int y = tiles_[t].y0; y < tiles_[t].y1; ++y)
+        for (int x = tiles_[t].x0; x < tiles_[t].x1; ++x) {
+          const Rgb& c = others_->centre[others_->index(x, y)];
+          sum.add(std::max({c.r, c.g, c.b}));
+        }
+  }
+  void completePass1(Film& film, std::span<const Tile>, const std::vector<std::uint8_t>&) override {
     if (!others_) return;
     for (std::size_t t = 1; t < tiles_.size(); t += 2)
       for (int y = tiles_[t].y0; y < tiles_[t].y1; ++y)

@@ -2,15 +2,20 @@
 // schedule is written once and does not know who runs it: the thread pool
 // (ThreadPoolExecutor, core/render/parallel.h) for `prism render` and the
 // previewer, executors of the tests' own (one worker, items in reverse order)
-// to show that the picture does not depend on the order, and later a
-// distributed (MPI) executor that runs a share of the items on each process
-// and exchanges samples at the reduction points below.
+// to show that the picture does not depend on the order, and the distributed
+// executor (mpi/mpi_executor.h) that runs a share of the items on each MPI
+// process and exchanges samples at the reduction points below.
 #pragma once
 
+#include "core/math/exact_sum.h"
 #include "core/render/film.h"
 #include "core/render/ray_counts.h"
+#include "core/render/tile.h"
 
+#include <cstdint>
 #include <functional>
+#include <span>
+#include <vector>
 
 namespace prism {
 
@@ -33,19 +38,39 @@ public:
   // `work` ends the others and is rethrown here.
   virtual void forEach(int itemCount, const ItemWork& work, const StopCheck& stop) = 0;
 
-  // Reduction point 1, between pass 1 and avgmax. On return `film.centre`
-  // must hold the centre sample of every pixel on this process: avgmax is the
-  // mean over all of them, and pass 2's decision reads each pixel's four
-  // neighbours, which may lie in tiles another process traced. Workers that
-  // share the film have written them all already: nothing to do. A
-  // distributed executor gathers (allgathers) the centres here.
-  virtual void completePass1(Film& film) { (void)film; }
+  // Like forEach, but every item on this process's own workers: work on
+  // what this process holds (pass 2's decisions for the tiles it traced).
+  virtual void forEachHere(int itemCount, const ItemWork& work, const StopCheck& stop) {
+    forEach(itemCount, work, stop);
+  }
+
+  // Adds the other processes' parts into `sum` (avgmax's sum of maxima, over
+  // the tiles each process traced). Nothing to do in shared memory.
+  virtual void sumOverProcesses(ExactSum& sum) { (void)sum; }
+
+  // Reduction point 1, after pass 1. `tiles` are the schedule's work items;
+  // `traced[t]` is 1 for the tiles whose centres this process traced. On
+  // return `film.centre` must also hold, around each of those tiles, the
+  // ring of neighbours' centres that pass 2's decision for its pixels reads.
+  // Workers that share the film have written them all already: nothing to
+  // do. A distributed executor exchanges the tiles' borders here.
+  virtual void completePass1(Film& film, std::span<const Tile> tiles,
+                             const std::vector<std::uint8_t>& traced) {
+    (void)film;
+    (void)tiles;
+    (void)traced;
+  }
+
+  // Pass 2's decisions (markForSupersampling): on entry those of the pixels
+  // of the tiles this process traced, 0 elsewhere; on return every pixel's,
+  // for pass 2 may run any tile anywhere. Nothing to do in shared memory.
+  virtual void shareMarks(std::vector<std::uint8_t>& marks) { (void)marks; }
 
   // Reduction point 2, after pass 2. On return `film` (radiance and the
   // supersampled mask) and `counts` (the rays this process's items traced)
   // must be the whole render's wherever the result is used. Nothing to do in
-  // shared memory; a distributed executor gathers the pass-2 samples and
-  // sums the counts to the process that writes the picture here.
+  // shared memory; a distributed executor gathers the samples and sums the
+  // counts to the process that writes the picture here.
   virtual void completeRender(Film& film, RayCounts& counts) {
     (void)film;
     (void)counts;

@@ -44,12 +44,19 @@ void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pix
     out.push_back({pixels[i].x, pixels[i].y, toRgb(colors[i])});
 }
 
-double averageMax(const std::vector<Rgb>& radiance) {
-  if (radiance.empty()) return 0.0;
-  double sum = 0.0;
+ExactSum sumOfMaxima(std::span<const Rgb> radiance) {
+  ExactSum sum;
   for (const Rgb& c : radiance)
-    sum += double(std::max({c.r, c.g, c.b}));
-  return sum / double(radiance.size());
+    sum.add(std::max({c.r, c.g, c.b}));
+  return sum;
+}
+
+double averageMax(const ExactSum& sumOfMaxima, std::size_t pixelCount) {
+  return pixelCount == 0 ? 0.0 : sumOfMaxima.value() / double(pixelCount);
+}
+
+double averageMax(const std::vector<Rgb>& radiance) {
+  return averageMax(sumOfMaxima(radiance), radiance.size());
 }
 
 bool needsSupersampling(const Film& film, int x, int y, double avgmax, double thresh) {
@@ -93,12 +100,19 @@ Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool ji
   return toRgb(sum / 16.0);
 }
 
+void markForSupersampling(const Tile& tile, const Film& film, double avgmax, double thresh,
+                          std::vector<std::uint8_t>& marks) {
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x)
+      marks[film.index(x, y)] = needsSupersampling(film, x, y, avgmax, thresh) ? 1 : 0;
+}
+
 void antialiasBlock(Tracer& tracer, const Camera& camera, const Tile& block, const Film& film,
-                    double avgmax, double thresh, bool jitter, std::vector<Sample>& out,
+                    const std::vector<std::uint8_t>& marks, bool jitter, std::vector<Sample>& out,
                     RayCounts& counts) {
   for (int y = block.y0; y < block.y1; ++y)
     for (int x = block.x0; x < block.x1; ++x)
-      if (needsSupersampling(film, x, y, avgmax, thresh))
+      if (marks[film.index(x, y)] != 0)
         out.push_back({x, y, supersamplePixel(tracer, camera, x, y, jitter, counts)});
 }
 

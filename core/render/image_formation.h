@@ -4,7 +4,9 @@
 // The order they run in is the pass schedule's (core/render/pass_schedule.h).
 #pragma once
 
+#include "core/math/exact_sum.h"
 #include "core/render/film.h"
+#include "core/render/tile.h"
 #include "core/render/tracer.h"
 #include "core/scene/camera.h"
 
@@ -12,10 +14,6 @@
 #include <vector>
 
 namespace prism {
-
-struct Tile {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0; // pixels [x0, x1) x [y0, y1)
-};
 
 // Row-major tiles of at most `size` x `size` pixels covering the image.
 std::vector<Tile> makeTiles(int width, int height, int size = 32);
@@ -46,8 +44,11 @@ struct Sample {
 void tracePixelCentres(Tracer& tracer, const Camera& camera, std::span<const Pixel> pixels,
                        std::vector<Sample>& out, RayCounts& counts);
 
-// Mean over all pixels of max(r, g, b), summed in pixel order so the result is
-// the same for any thread count.
+// Mean over all pixels of max(r, g, b). The sum is exact (core/math/exact_sum.h),
+// so the result is the same for any order and any split of the pixels between
+// threads or processes: sumOfMaxima of each part, added, then averageMax.
+ExactSum sumOfMaxima(std::span<const Rgb> radiance);
+double averageMax(const ExactSum& sumOfMaxima, std::size_t pixelCount);
 double averageMax(const std::vector<Rgb>& radiance);
 
 // Pass 2's decision: true when some 4-neighbour's pass-1 colour differs by more than
@@ -59,10 +60,17 @@ bool needsSupersampling(const Film& film, int x, int y, double avgmax, double th
 Rgb supersamplePixel(Tracer& tracer, const Camera& camera, int x, int y, bool jitter,
                      RayCounts& counts);
 
-// Pass 2 over `block` of `film`, whose centres are a complete pass 1: the
-// supersamplePixel of every pixel that needsSupersampling, appended to `out`.
+// Pass 2's decisions for the pixels of `tile`, whose centres and the centres
+// around it are pass 1's: marks[i] = needsSupersampling, 1 or 0, for each
+// of its pixels (marks holds one byte per pixel of the film).
+void markForSupersampling(const Tile& tile, const Film& film, double avgmax, double thresh,
+                          std::vector<std::uint8_t>& marks);
+
+// Pass 2 over `block` of `film`: the supersamplePixel of every pixel marked
+// (markForSupersampling), appended to `out`. Needs no centres: whoever runs
+// it may have no pass-1 samples near it (another MPI rank traced them).
 void antialiasBlock(Tracer& tracer, const Camera& camera, const Tile& block, const Film& film,
-                    double avgmax, double thresh, bool jitter, std::vector<Sample>& out,
+                    const std::vector<std::uint8_t>& marks, bool jitter, std::vector<Sample>& out,
                     RayCounts& counts);
 
 // Samples into the film. A pass-1 sample is the pixel's centre and its value

@@ -26,7 +26,7 @@ public:
   Run(const PassSchedule& schedule, Film& film, Executor& executor, ScheduleSink& sink,
       const StopCheck& stop)
       : s_(schedule), film_(film), executor_(executor), sink_(sink), stop_(stop),
-        counts_(std::size_t(executor.workers())) {
+        counts_(std::size_t(executor.workers())), traced_(std::size_t(schedule.tileCount()), 0) {
     if (s_.settings_.bailout > 0.0) {
       bound_.beyond = radianceBounds(s_.scene_, s_.settings_.maxDepth);
       // Where no ray could be skipped the exact trace is the same picture,
@@ -70,7 +70,9 @@ public:
           counts_[std::size_t(worker)].bailoutPilot += counts.total();
         },
         stop_);
-    return averageMax(local);
+    ExactSum sum = sumOfMaxima(local); // 0 where another process traced
+    executor_.sumOverProcesses(sum);
+    return averageMax(sum, local.size());
   }
 
   bool stopped() const { return stop_ && stop_(); }
@@ -93,13 +95,52 @@ public:
         });
   }
 
+  // The previewer's Pass1::Keep: the film holds every centre already.
+  void keepPass1() {
+    std::fill(traced_.begin(), traced_.end(), std::uint8_t(1));
+    film_.radiance = film_.centre;
+    std::fill(film_.supersampled.begin(), film_.supersampled.end(), std::uint8_t(0));
+  }
+
+  // Reduction point 1, then avgmax: the exact sum of the maxima of the
+  // centres this process traced, plus the other processes' parts.
+  double completePass1() {
+    ExactSum sum;
+    for (std::size_t t = 0; t < traced_.size(); ++t) {
+      if (traced_[t] == 0) continue;
+      const Tile& tile = s_.tiles_[t];
+      for (int y = tile.y0; y < tile.y1; ++y)
+        sum += sumOfMaxima(std::span(film_.centre).subspan(film_.index(tile.x0, y),
+                                                           std::size_t(tile.x1 - tile.x0)));
+    }
+    executor_.sumOverProcesses(sum);
+    executor_.completePass1(film_, s_.tiles_, traced_);
+    return averageMax(sum, film_.pixelCount());
+  }
+
+  // Pass 2's decisions for the tiles traced here (they read the centres
+  // around them), then shared: pass 2 may run any tile anywhere.
+  void decide(double avgmax) {
+    marks_.assign(film_.pixelCount(), 0);
+    std::vector<int> here;
+    for (std::size_t t = 0; t < traced_.size(); ++t)
+      if (traced_[t] != 0) here.push_back(int(t));
+    executor_.forEachHere(
+        int(here.size()),
+        [&](int item, int) {
+          markForSupersampling(s_.tiles_[std::size_t(here[std::size_t(item)])], film_, avgmax,
+                               s_.settings_.thresh, marks_);
+        },
+        stop_);
+    if (!stopped()) executor_.shareMarks(marks_);
+  }
+
   // Pass 2 in small blocks: a supersampled pixel costs 16 eye rays and their
   // trees, and a cancelling edit should not wait for many of them.
-  void antialias(double avgmax) {
-    const RenderSettings& settings = s_.settings_;
+  void antialias() {
     forEachTile(2, 1, 4, [&](Tracer& tracer, const Tile& block, TileSamples& out) {
-      antialiasBlock(tracer, s_.camera_, block, film_, avgmax, settings.thresh, settings.jitter,
-                     out.samples, out.counts);
+      antialiasBlock(tracer, s_.camera_, block, film_, marks_, s_.settings_.jitter, out.samples,
+                     out.counts);
     });
   }
 
@@ -138,6 +179,7 @@ private:
           // All at once: the film never holds a part of a tile, and a
           // tile stopped halfway is dropped whole.
           (pass == 1 ? storeCentres : storeSupersampled)(out.samples, film_);
+          if (pass == 1) traced_[std::size_t(item)] = 1;
           counts_[std::size_t(worker)] += out.counts;
           sink_.tileDone(out);
         },
@@ -149,8 +191,10 @@ private:
   Executor& executor_;
   ScheduleSink& sink_;
   const StopCheck& stop_;
-  std::vector<RayCounts> counts_; // per worker
-  BailoutBound bound_;            // inactive unless settings.bailout > 0
+  std::vector<RayCounts> counts_;     // per worker
+  std::vector<std::uint8_t> traced_; // per tile: 1 once its centres are in the film
+  std::vector<std::uint8_t> marks_;  // per pixel: 1 where pass 2 supersamples
+  BailoutBound bound_;                // inactive unless settings.bailout > 0
 };
 
 bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const StopCheck& stop,
@@ -167,18 +211,20 @@ bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const
       if (run.stopped()) return false;
     }
   } else {
-    film.radiance = film.centre;
-    std::fill(film.supersampled.begin(), film.supersampled.end(), std::uint8_t(0));
+    run.keepPass1();
   }
 
-  executor.completePass1(film);
-  // Summed in pixel order over the whole film: the same for any executor.
-  const double avgmax = averageMax(film.centre);
+  // The same avgmax, bit for bit, for any executor (an exact sum).
+  const double avgmax = run.completePass1();
   sink.pass1Complete(avgmax);
 
   // Pass 2's samples are exposed by this avgmax: their allowance is its W levels.
   run.allowFor(avgmax);
-  if (!settings_.noAa) run.antialias(avgmax);
+  if (!settings_.noAa) {
+    run.decide(avgmax);
+    if (run.stopped()) return false;
+    run.antialias();
+  }
   if (run.stopped()) return false;
 
   RayCounts counts = run.counts();

@@ -39,9 +39,14 @@ private:
 
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                     const ProgressCallback& progress) {
+  ThreadPoolExecutor executor(resolveThreadCount(settings.threads));
+  return render(scene, accel, settings, executor, progress);
+}
+
+RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                    Executor& executor, const ProgressCallback& progress) {
   // Pass 1 in one go: a preview level would only change the order.
   const PassSchedule schedule(scene, accel, settings);
-  ThreadPoolExecutor executor(resolveThreadCount(settings.threads));
   RenderResult result;
   result.film = Film(settings.width, settings.height);
   ResultSink sink(result, schedule.tileCount(), progress);

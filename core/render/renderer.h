@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/accel/accel.h"
+#include "core/render/executor.h"
 #include "core/render/film.h"
 #include "core/render/ray_counts.h"
 
@@ -46,5 +47,11 @@ using ProgressCallback = std::function<void(const RenderProgress&)>;
 // `progress` is called from worker threads (one at a time) after each tile.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                     const ProgressCallback& progress = {});
+
+// The same on `executor` (settings.threads is then the executor's business):
+// for a distributed executor the result is whole on rank 0 only, and
+// `progress` hears this process's tiles.
+RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                    Executor& executor, const ProgressCallback& progress = {});
 
 } // namespace prism

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace prism {
@@ -47,12 +48,30 @@ std::string formatStatsText(const RenderStats& s) {
   text += line("supersampled        %lld pixels (%.2f%%)\n", s.supersampledPixels,
                100.0 * s.supersampledShare());
   text += line("avgmax              %.6g\n", s.avgmax);
+  if (!s.ranks.empty()) {
+    text += line("ranks               %zu (load balance %.3f: mean CPU / busiest rank's)\n",
+                 s.ranks.size(), s.loadBalance());
+    text += line("  %4s  %-24s %7s %6s %14s %10s\n", "rank", "host", "threads", "tiles", "rays",
+                 "CPU s");
+    for (const RankStats& r : s.ranks)
+      text += line("  %4d  %-24s %7d %6d %14llu %10.3f\n", r.rank, r.host.c_str(), r.threads,
+                   r.tiles, (unsigned long long)r.rays, r.cpuSeconds);
+  }
   return text;
+}
+
+double RenderStats::loadBalance() const {
+  double sum = 0.0, busiest = 0.0;
+  for (const RankStats& r : ranks) {
+    sum += r.cpuSeconds;
+    busiest = std::max(busiest, r.cpuSeconds);
+  }
+  return busiest > 0.0 ? sum / double(ranks.size()) / busiest : 0.0;
 }
 
 std::string formatStatsJson(const RenderStats& s) {
   const RayCounts& c = s.counts;
-  const nlohmann::ordered_json json = {
+  nlohmann::ordered_json json = {
       {"scene", s.scene},
       {"machine", s.machine},
       {"width", s.width},
@@ -87,6 +106,18 @@ std::string formatStatsJson(const RenderStats& s) {
       {"supersampled_share", s.supersampledShare()},
       {"avgmax", s.avgmax},
   };
+  if (!s.ranks.empty()) {
+    json["load_balance"] = s.loadBalance();
+    nlohmann::ordered_json ranks = nlohmann::ordered_json::array();
+    for (const RankStats& r : s.ranks)
+      ranks.push_back({{"rank", r.rank},
+                       {"host", r.host},
+                       {"threads", r.threads},
+                       {"tiles", r.tiles},
+                       {"rays", r.rays},
+                       {"cpu_seconds", r.cpuSeconds}});
+    json["ranks"] = ranks;
+  }
   return json.dump(2) + "\n";
 }
 

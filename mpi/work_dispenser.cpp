@@ -1,0 +1,160 @@
+#include "mpi/work_dispenser.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <exception>
+#include <thread>
+
+namespace prism::mpi {
+
+namespace {
+
+// Tags of one call's messages: a request (rank > 0 to rank 0: the items it
+// finished since its last request and how many it wants) and a grant (rank 0
+// to it: the first item and the count of a range, count 0 meaning "no
+// more"). Calls cycle through a range of tags far below MPI's guaranteed
+// upper bound of 32767.
+int requestTag(int call) { return 1000 + 2 * (call % 4000); }
+int grantTag(int call) { return requestTag(call) + 1; }
+
+} // namespace
+
+int ItemQueue::take() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return !items_.empty() || closed_; });
+  if (items_.empty()) return -1;
+  const int item = items_.front();
+  items_.pop_front();
+  changed_.notify_all(); // the main thread refills when the queue runs low
+  return item;
+}
+
+void ItemQueue::finished() {
+  std::lock_guard lock(mutex_);
+  ++doneSinceReport_;
+  changed_.notify_all();
+}
+
+bool ItemQueue::exhausted() {
+  std::lock_guard lock(mutex_);
+  return closed_ && items_.empty();
+}
+
+void WorkDispenser::run(int itemCount, int localWorkers,
+                        const std::function<void(ItemQueue&)>& runLocal,
+                        const std::function<void(int, int)>& progress) {
+  ItemQueue queue;
+  int next = 0;                   // rank 0: the first item not handed out
+  int jobDone = 0;                // rank 0: items finished over the job
+  int ranksTold = 0;              // rank 0: processes told there are no more
+  int reported = -1;              // rank 0: jobDone when progress last heard it
+  const int low = localWorkers;   // refill below one queued item per worker
+  bool asking = false;            // rank > 0: a request is out
+  int unreported = 0;             // rank > 0: items finished, for the next request
+  int grant[2] = {0, 0};
+  int request[2] = {0, 0};        // the request in flight (MPI owns it until sent)
+  MPI_Request grantRequest = MPI_REQUEST_NULL, requestRequest = MPI_REQUEST_NULL;
+
+  // The items rank 0 gives out next: contiguous, as many as the process has
+  // workers, so no process holds more than about two items per worker that
+  // another could be running at the end.
+  auto grantFrom = [&](int want) {
+    const int count = std::min(std::max(1, want), itemCount - next);
+    const int first = next;
+    next += count;
+    return std::pair{first, count};
+  };
+
+  std::exception_ptr failure;
+  std::thread local([&] {
+    try {
+      runLocal(queue);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    std::lock_guard lock(queue.mutex_);
+    queue.localDone_ = true;
+    queue.closed_ = true; // a failed run takes no more
+    queue.changed_.notify_all();
+  });
+
+  for (;;) {
+    bool localDone = false;
+    int doneNow = 0;
+    {
+      std::unique_lock lock(queue.mutex_);
+      // Sleeps until something local happens or the next poll is due.
+      queue.changed_.wait_for(lock, kPollInterval, [&] {
+        return queue.localDone_ || queue.doneSinceReport_ > 0 ||
+               (!queue.closed_ && int(queue.items_.size()) < low && !asking);
+      });
+      localDone = queue.localDone_;
+      doneNow = queue.doneSinceReport_;
+      queue.doneSinceReport_ = 0;
+      const bool wantsMore = !queue.closed_ && int(queue.items_.size()) < low;
+      if (rank_ == 0) {
+        jobDone += doneNow;
+        if (wantsMore) {
+          const auto [first, count] = grantFrom(localWorkers);
+          for (int i = 0; i < count; ++i)
+            queue.items_.push_back(first + i);
+          if (count == 0) queue.closed_ = true;
+          queue.changed_.notify_all();
+        }
+      } else {
+        unreported += doneNow; // reported with the next request
+        if (wantsMore && !asking) asking = true;
+      }
+    }
+
+    if (rank_ == 0) {
+      // Every request waiting now, answered at once.
+      for (;;) {
+        int pending = 0;
+        MPI_Status status;
+        MPI_Iprobe(MPI_ANY_SOURCE, requestTag(call_), MPI_COMM_WORLD, &pending, &status);
+        if (!pending) break;
+        int asked[2];
+        MPI_Recv(asked, 2, MPI_INT, status.MPI_SOURCE, requestTag(call_), MPI_COMM_WORLD,
+                 MPI_STATUS_IGNORE);
+        jobDone += asked[0];
+        const auto [first, count] = grantFrom(asked[1]);
+        const int reply[2] = {first, count};
+        MPI_Send(reply, 2, MPI_INT, status.MPI_SOURCE, grantTag(call_), MPI_COMM_WORLD);
+        if (count == 0) ++ranksTold;
+      }
+      if (progress && jobDone != reported) progress(reported = jobDone, itemCount);
+      if (localDone && ranksTold == size_ - 1) break;
+    } else {
+      if (asking && requestRequest == MPI_REQUEST_NULL && grantRequest == MPI_REQUEST_NULL) {
+        request[0] = unreported;
+        request[1] = localWorkers;
+        unreported = 0;
+        MPI_Irecv(grant, 2, MPI_INT, 0, grantTag(call_), MPI_COMM_WORLD, &grantRequest);
+        MPI_Isend(request, 2, MPI_INT, 0, requestTag(call_), MPI_COMM_WORLD, &requestRequest);
+      }
+      if (requestRequest != MPI_REQUEST_NULL) {
+        int sent = 0;
+        MPI_Test(&requestRequest, &sent, MPI_STATUS_IGNORE);
+      }
+      if (grantRequest != MPI_REQUEST_NULL && requestRequest == MPI_REQUEST_NULL) {
+        int granted = 0;
+        MPI_Test(&grantRequest, &granted, MPI_STATUS_IGNORE);
+        if (granted) {
+          asking = false;
+          std::lock_guard lock(queue.mutex_);
+          for (int i = 0; i < grant[1]; ++i)
+            queue.items_.push_back(grant[0] + i);
+          if (grant[1] == 0) queue.closed_ = true;
+          queue.changed_.notify_all();
+        }
+      }
+      if (localDone && !asking) break;
+    }
+  }
+  local.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+} // namespace prism::mpi

@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev                # statistics as JSON
   libtinyobjloader-dev              # OBJ/MTL import
   libgtest-dev                      # tests
+  openmpi-bin libopenmpi-dev        # distributed rendering (libprism_mpi.so; mpirun for its tests)
   # the previewer: windows, OpenGL (GLVND) and Mesa's software rasteriser, Dear ImGui
   libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev
   libosmesa6-dev                    # the display test draws offscreen through OSMesa

@@ -1,0 +1,166 @@
+// `mpirun -np N prism render`: the picture (float radiance, bit for bit) and
+// the statistics are those of one process for any number of ranks and
+// threads; tiles go to whichever rank asks, so a slowed rank does fewer; a
+// killed rank ends the job with a message and no picture; a scene error is
+// reported once with the usage status (docs/distributed.md).
+#include "tests/test_files.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism::test {
+namespace {
+
+// Open MPI as root on one machine: more ranks than cores, and no
+// single-copy transfers between processes (containers often forbid the
+// ptrace they need). `timeout` bounds a run that would hang.
+std::string mpirun(int ranks) {
+  return "timeout 120 mpirun --allow-run-as-root --oversubscribe --mca "
+         "btl_vader_single_copy_mechanism none -np " +
+         std::to_string(ranks) + " ";
+}
+
+std::optional<std::vector<float>> readRadiance(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return std::nullopt;
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) *
+                            std::size_t(spec.nchannels));
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    return std::nullopt;
+  return pixels;
+}
+
+class MpiRender : public ::testing::Test {
+protected:
+  ScratchDir dir_;
+  std::string scene(const std::string& name) const {
+    return quoted(fs::path(PRISM_SOURCE_DIR) / "scenes" / name);
+  }
+  // `prism render SCENE ARGS` on `ranks` processes (0: no mpirun), writing
+  // OUT.tiff (float radiance) and OUT.json.
+  RunResult render(int ranks, const std::string& out, const std::string& args,
+                   const std::string& env = "") {
+    const std::string launcher = ranks > 0 ? mpirun(ranks) : "";
+    return run(dir_.path(), env + launcher + quoted(PRISM_BINARY) + " render " + args + " -o " +
+                                quoted(dir_ / (out + ".tiff")) + " --float --stats-json " +
+                                quoted(dir_ / (out + ".json")));
+  }
+  nlohmann::json stats(const std::string& out) const {
+    return nlohmann::json::parse(slurp(dir_ / (out + ".json")));
+  }
+};
+
+// What must not depend on the number of processes.
+void expectSameRender(const nlohmann::json& one, const nlohmann::json& many) {
+  EXPECT_EQ(one["rays"], many["rays"]);
+  EXPECT_EQ(one["tir_events"], many["tir_events"]);
+  EXPECT_EQ(one["bailout_skipped"], many["bailout_skipped"]);
+  EXPECT_EQ(one["avgmax"], many["avgmax"]); // a double, compared exactly
+  EXPECT_EQ(one["supersampled_pixels"], many["supersampled_pixels"]);
+}
+
+TEST_F(MpiRender, EveryRankAndThreadCountGivesTheOneProcessPictureBitForBit) {
+  // 100 x 76 in 32-pixel tiles: 4 x 3 tiles, the last column and row narrow.
+  const std::string args = scene("glass.sc") + " --size 100 76 -q";
+  const RunResult one = render(0, "one", args + " --threads 2");
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  const auto reference = readRadiance(dir_ / "one.tiff");
+  ASSERT_TRUE(reference);
+  for (const auto& [ranks, threads] : {std::pair{2, 1}, {3, 2}, {4, 1}}) {
+    const std::string name = "np" + std::to_string(ranks);
+    const RunResult many = render(ranks, name, args + " --threads " + std::to_string(threads));
+    ASSERT_EQ(many.exitCode, 0) << many.err;
+    EXPECT_EQ(readRadiance(dir_ / (name + ".tiff")), reference) << ranks << " ranks";
+    const nlohmann::json s = stats(name);
+    expectSameRender(stats("one"), s);
+    // One entry per rank; every tile of both passes ran exactly once.
+    ASSERT_EQ(s["ranks"].size(), std::size_t(ranks));
+    int tiles = 0;
+    for (const auto& r : s["ranks"]) {
+      tiles += r["tiles"].get<int>();
+      EXPECT_EQ(r["threads"], threads);
+      EXPECT_GT(r["cpu_seconds"].get<double>(), 0.0);
+    }
+    EXPECT_EQ(tiles, 2 * 12);
+    EXPECT_GT(s["load_balance"].get<double>(), 0.0);
+    EXPECT_LE(s["load_balance"].get<double>(), 1.0);
+  }
+}
+
+// Without antialiasing, and with the bailout (whose pilot pass is a third
+// hand-out of tiles and a second exact sum), the same holds.
+TEST_F(MpiRender, NoAntialiasingAndTheBailoutAreTheOneProcessPictureToo) {
+  for (const std::string& option : {std::string("--no-aa"), std::string("--bailout 1")}) {
+    const std::string args = scene("chex.sc") + " --size 90 64 -q --threads 1 " + option;
+    ASSERT_EQ(render(0, "one", args).exitCode, 0);
+    const RunResult many = render(3, "np3", args);
+    ASSERT_EQ(many.exitCode, 0) << many.err;
+    EXPECT_EQ(readRadiance(dir_ / "np3.tiff"), readRadiance(dir_ / "one.tiff")) << option;
+    expectSameRender(stats("one"), stats("np3"));
+  }
+}
+
+// Rank 1 waits 40 ms after each tile: the tiles are handed out on request,
+// so rank 0 does most of them, and the picture is unchanged.
+TEST_F(MpiRender, ASlowRankIsGivenFewerTiles) {
+  const std::string args = scene("chex.sc") + " --size 128 128 --no-aa -q --threads 1";
+  ASSERT_EQ(render(0, "one", args).exitCode, 0);
+  const RunResult many =
+      render(2, "slow", args, "PRISM_MPI_SIMULATE=rank=1,tile_delay_ms=40 ");
+  ASSERT_EQ(many.exitCode, 0) << many.err;
+  EXPECT_EQ(readRadiance(dir_ / "slow.tiff"), readRadiance(dir_ / "one.tiff"));
+  const nlohmann::json s = stats("slow");
+  ASSERT_EQ(s["ranks"].size(), 2u);
+  const int fast = s["ranks"][0]["tiles"], slow = s["ranks"][1]["tiles"];
+  EXPECT_EQ(fast + slow, 16);
+  EXPECT_GT(fast, slow) << "rank 0 did " << fast << " tiles, the slowed rank 1 " << slow;
+}
+
+// Rank 1 dies (SIGKILL) after its second tile: the job ends, not hangs, with
+// a non-zero status and mpirun's message naming the rank, and leaves no
+// picture and no statistics.
+TEST_F(MpiRender, AKilledRankEndsTheJobWithAMessageAndNoFiles) {
+  const std::string args = scene("glass.sc") + " --size 160 120 -q --threads 1";
+  const RunResult killed = render(2, "killed", args, "PRISM_MPI_SIMULATE=rank=1,die_after_tiles=2 ");
+  EXPECT_NE(killed.exitCode, 0);
+  EXPECT_NE(killed.exitCode, 124) << "the job hung until the timeout";
+  EXPECT_NE((killed.out + killed.err).find("rank 1"), std::string::npos) << killed.err;
+  EXPECT_FALSE(fs::exists(dir_ / "killed.tiff"));
+  EXPECT_FALSE(fs::exists(dir_ / "killed.json"));
+  for (const auto& entry : fs::directory_iterator(dir_.path()))
+    EXPECT_EQ(entry.path().filename().string().find("killed"), std::string::npos)
+        << "a leftover: " << entry.path();
+}
+
+// Every rank reads the scene and fails the same way; only rank 0 says so,
+// and the job's status is the usage status of a single process.
+TEST_F(MpiRender, ASceneErrorIsReportedOnceWithStatusTwo) {
+  writeFile(dir_ / "bad.sc", "eye 0 0 5\nsphere 0 0 0 oops\n");
+  const RunResult bad = render(3, "bad", quoted(dir_ / "bad.sc") + " -q");
+  EXPECT_EQ(bad.exitCode, 2) << bad.err;
+  const std::string where = "bad.sc:2:";
+  const std::size_t first = bad.err.find(where);
+  ASSERT_NE(first, std::string::npos) << bad.err;
+  EXPECT_EQ(bad.err.find(where, first + 1), std::string::npos) << "reported twice:\n" << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad.tiff"));
+}
+
+// An output rank 0 cannot write stops every rank before any work, once.
+TEST_F(MpiRender, AnUnwritableOutputStopsEveryRankBeforeTheRender) {
+  const RunResult unwritable =
+      run(dir_.path(), mpirun(2) + quoted(PRISM_BINARY) + " render " + scene("glass.sc") +
+                                 " -o " + quoted(dir_ / "no" / "such" / "dir" / "x.tiff") + " -q");
+  EXPECT_EQ(unwritable.exitCode, 1) << unwritable.err;
+  const std::size_t first = unwritable.err.find("prism: error:");
+  ASSERT_NE(first, std::string::npos) << unwritable.err;
+  EXPECT_EQ(unwritable.err.find("prism: error:", first + 1), std::string::npos) << unwritable.err;
+}
+
+} // namespace
+} // namespace prism::test

@@ -107,3 +107,32 @@ TEST(Stats, TotalsAddUpOnARichScene) {
 
 } // namespace
 } // namespace prism
+
+namespace prism {
+namespace {
+
+// A distributed render's statistics: one JSON object and one text row per
+// rank, and the load balance as the mean CPU over the busiest rank's
+// (1.5 and 3.0 seconds: mean 2.25, balance 0.75).
+TEST(Stats, RanksOfADistributedRenderAndTheirLoadBalance) {
+  RenderStats stats;
+  EXPECT_EQ(stats.loadBalance(), 0.0);
+  EXPECT_EQ(formatStatsText(stats).find("ranks"), std::string::npos);
+  EXPECT_FALSE(nlohmann::json::parse(formatStatsJson(stats)).contains("ranks"));
+  stats.ranks = {{0, "node-a", 2, 30, 1000, 1.5}, {1, "node-b", 4, 50, 3000, 3.0}};
+  EXPECT_DOUBLE_EQ(stats.loadBalance(), 0.75);
+  const auto json = nlohmann::json::parse(formatStatsJson(stats));
+  EXPECT_DOUBLE_EQ(json["load_balance"].get<double>(), 0.75);
+  ASSERT_EQ(json["ranks"].size(), 2u);
+  EXPECT_EQ(json["ranks"][1]["host"], "node-b");
+  EXPECT_EQ(json["ranks"][1]["threads"], 4);
+  EXPECT_EQ(json["ranks"][1]["tiles"], 50);
+  EXPECT_EQ(json["ranks"][1]["rays"], 3000);
+  EXPECT_DOUBLE_EQ(json["ranks"][1]["cpu_seconds"].get<double>(), 3.0);
+  const std::string text = formatStatsText(stats);
+  EXPECT_NE(text.find("ranks               2 (load balance 0.750"), std::string::npos) << text;
+  EXPECT_NE(text.find("node-b"), std::string::npos) << text;
+}
+
+} // namespace
+} // namespace prism

@@ -60,7 +60,7 @@ void addRenderSettingsOptions(CLI::App& command, RenderCommandOptions& o) {
   command.add_option("--size", o.size, "Image size W H (overrides the scene's resolution)")
       ->expected(2)
       ->check(CLI::Range(1, 32768));
-  addRangedOption(command, "--threads", o.threads, "Render threads (0: all cores)", 0, 1024);
+  addRangedOption(command, "--threads", o.threads, "Render threads (0: every core this process may use)", 0, 1024);
   command.add_flag("--jitter", o.jitter, "Jitter the 16 sub-samples within their cells");
   command.add_flag("--no-aa", o.noAa,
                    "No antialiasing: pass 1 only, one eye ray through each pixel centre");

@@ -1,5 +1,6 @@
 #include "core/render/parallel.h"
 
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -14,6 +15,13 @@ namespace prism {
 
 int resolveThreadCount(int requested) {
   if (requested > 0) return requested;
+  // The cores this process may run on, not the machine's: mpirun binds each
+  // rank to its share of the cores (and taskset or a container's cpuset
+  // restrict a process), and more threads than that only take turns.
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0 && CPU_COUNT(&allowed) > 0)
+    return CPU_COUNT(&allowed);
   const unsigned hardware = std::thread::hardware_concurrency();
   return hardware > 0 ? int(hardware) : 1;
 }

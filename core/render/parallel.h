@@ -10,7 +10,9 @@
 
 namespace prism {
 
-// Resolves a requested thread count: 0 means every hardware thread.
+// Resolves a requested thread count: 0 means every core this process may run
+// on (its CPU affinity: all of the machine's unless taskset, a container or
+// an MPI launcher's binding restricts it).
 int resolveThreadCount(int requested);
 
 // Makes the calling thread yield to interactive threads (a previewer's UI):

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -97,6 +98,27 @@ TEST(PendingFile, ASignalRemovesPendingTemporaries) {
     EXPECT_EQ(WTERMSIG(status), signal);
     EXPECT_TRUE(entries(dir.path()).empty()) << entries(dir.path()).front();
   }
+}
+
+// Threads 0 is the cores this thread may run on: bound to one core (as
+// mpirun binds a rank, or taskset a process) it is 1, and an explicit count
+// is kept whatever the binding.
+TEST(ParallelFor, ThreadsZeroFollowsTheCpuAffinity) {
+  cpu_set_t saved;
+  ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
+  EXPECT_EQ(resolveThreadCount(0), CPU_COUNT(&saved));
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+    if (CPU_ISSET(cpu, &saved)) {
+      CPU_SET(cpu, &one);
+      break;
+    }
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  const int bound = resolveThreadCount(0), explicitCount = resolveThreadCount(3);
+  ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
+  EXPECT_EQ(bound, 1);
+  EXPECT_EQ(explicitCount, 3);
 }
 
 // An exception thrown by a worker (std::bad_alloc in a tile, say) ended the

@@ -162,5 +162,21 @@ TEST_F(MpiRender, AnUnwritableOutputStopsEveryRankBeforeTheRender) {
   EXPECT_EQ(unwritable.err.find("prism: error:", first + 1), std::string::npos) << unwritable.err;
 }
 
+// MPI costs nothing where it is not used: a render started without a
+// launcher loads neither the MPI module nor libmpi (the dynamic loader's
+// own log says what it loads); under mpirun, even of one rank, it loads both.
+TEST_F(MpiRender, OnlyARenderStartedByALauncherLoadsMpi) {
+  const std::string args = scene("table.sc") + " --size 16 12 -q";
+  const RunResult plain = render(0, "plain", args, "LD_DEBUG=files ");
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_NE(plain.err.find("file=libtiff"), std::string::npos) << "no loader log:\n" << plain.err;
+  EXPECT_EQ(plain.err.find("libprism_mpi"), std::string::npos);
+  EXPECT_EQ(plain.err.find("libmpi"), std::string::npos);
+  const RunResult launched = render(1, "launched", args, "LD_DEBUG=files ");
+  ASSERT_EQ(launched.exitCode, 0) << launched.err;
+  EXPECT_NE(launched.err.find("libprism_mpi.so"), std::string::npos);
+  EXPECT_NE(launched.err.find("libmpi.so"), std::string::npos);
+}
+
 } // namespace
 } // namespace prism::test

@@ -79,14 +79,16 @@ void WorkDispenser::run(int itemCount, int localWorkers,
     queue.changed_.notify_all();
   });
 
+  bool localDone = false; // the local threads have returned
   for (;;) {
-    bool localDone = false;
     int doneNow = 0;
     {
       std::unique_lock lock(queue.mutex_);
-      // Sleeps until something local happens or the next poll is due.
+      // Sleeps until something local changes or the next poll is due (rank
+      // 0, its own threads done, still answers the others' last requests:
+      // without a poll interval it would spin).
       queue.changed_.wait_for(lock, kPollInterval, [&] {
-        return queue.localDone_ || queue.doneSinceReport_ > 0 ||
+        return queue.localDone_ != localDone || queue.doneSinceReport_ > 0 ||
                (!queue.closed_ && int(queue.items_.size()) < low && !asking);
       });
       localDone = queue.localDone_;

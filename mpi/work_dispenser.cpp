@@ -80,17 +80,22 @@ void WorkDispenser::run(int itemCount, int localWorkers,
   });
 
   bool localDone = false; // the local threads have returned
+  // The poll interval backs off while nothing happens (a poll costs tens of
+  // microseconds of MPI progress), and starts over at every event.
+  auto poll = kPollInterval;
   for (;;) {
     int doneNow = 0;
+    bool happened = false;
     {
       std::unique_lock lock(queue.mutex_);
       // Sleeps until something local changes or the next poll is due (rank
       // 0, its own threads done, still answers the others' last requests:
       // without a poll interval it would spin).
-      queue.changed_.wait_for(lock, kPollInterval, [&] {
+      queue.changed_.wait_for(lock, poll, [&] {
         return queue.localDone_ != localDone || queue.doneSinceReport_ > 0 ||
                (!queue.closed_ && int(queue.items_.size()) < low && !asking);
       });
+      happened = queue.localDone_ != localDone || queue.doneSinceReport_ > 0;
       localDone = queue.localDone_;
       doneNow = queue.doneSinceReport_;
       queue.doneSinceReport_ = 0;
@@ -125,6 +130,7 @@ void WorkDispenser::run(int itemCount, int localWorkers,
         const int reply[2] = {first, count};
         MPI_Send(reply, 2, MPI_INT, status.MPI_SOURCE, grantTag(call_), MPI_COMM_WORLD);
         if (count == 0) ++ranksTold;
+        happened = true;
       }
       if (progress && jobDone != reported) progress(reported = jobDone, itemCount);
       if (localDone && ranksTold == size_ - 1) break;
@@ -145,6 +151,7 @@ void WorkDispenser::run(int itemCount, int localWorkers,
         MPI_Test(&grantRequest, &granted, MPI_STATUS_IGNORE);
         if (granted) {
           asking = false;
+          happened = true;
           std::lock_guard lock(queue.mutex_);
           for (int i = 0; i < grant[1]; ++i)
             queue.items_.push_back(grant[0] + i);
@@ -154,9 +161,22 @@ void WorkDispenser::run(int itemCount, int localWorkers,
       }
       if (localDone && !asking) break;
     }
+    poll = happened ? kPollInterval : std::min(2 * poll, kLongestPoll);
   }
   local.join();
+  // A failure here: the caller ends the job (the others cannot finish
+  // without this process's items).
   if (failure) std::rethrow_exception(failure);
+  // Leave together, asleep between polls: a blocking collective next would
+  // spin (MPI's progress loop) on every process that finished early.
+  MPI_Request together;
+  MPI_Ibarrier(MPI_COMM_WORLD, &together);
+  for (int left = 0;;) {
+    MPI_Test(&together, &left, MPI_STATUS_IGNORE);
+    if (left) break;
+    std::this_thread::sleep_for(poll);
+    poll = std::min(2 * poll, kLongestPoll);
+  }
 }
 
 } // namespace prism::mpi

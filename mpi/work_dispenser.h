@@ -6,8 +6,10 @@
 // round trip is hidden behind the items still queued.
 //
 // All MPI calls are made by the main thread (MPI_THREAD_FUNNELED): it polls
-// for messages and sleeps on the local queue between polls (at most
-// kPollInterval), so it takes no core from the threads doing the work.
+// for messages and sleeps on the local queue between polls (kPollInterval,
+// doubling up to kLongestPoll while nothing happens), so it takes no core
+// from the threads doing the work; a request's answer is late by at most a
+// poll, hidden behind the items still queued.
 #pragma once
 
 #include <chrono>
@@ -41,6 +43,7 @@ private:
 class WorkDispenser {
 public:
   static constexpr auto kPollInterval = std::chrono::microseconds(200);
+  static constexpr auto kLongestPoll = std::chrono::microseconds(3200);
 
   // `call`: the number of this collective hand-out in the job (each process
   // counts its calls; messages of different calls never mix).
@@ -49,8 +52,8 @@ public:
   // Hands items [0, itemCount) out over the job: `runLocal(queue)` runs on a
   // thread of its own and must take items from `queue` until it returns -1
   // on each of `localWorkers` workers, then return. Returns when every
-  // process has been told there are no more items and the local threads
-  // are done; rethrows what `runLocal` threw. On rank 0, `progress(done,
+  // process's items are done (all leave together); rethrows at once what
+  // `runLocal` threw (the caller must end the job: the others would wait). On rank 0, `progress(done,
   // itemCount)` hears how many items the job has finished.
   void run(int itemCount, int localWorkers, const std::function<void(ItemQueue&)>& runLocal,
            const std::function<void(int done, int total)>& progress = {});

@@ -122,6 +122,24 @@ TEST_F(MpiRender, ASlowRankIsGivenFewerTiles) {
   EXPECT_GT(fast, slow) << "rank 0 did " << fast << " tiles, the slowed rank 1 " << slow;
 }
 
+// Rank 0 takes a second over each tile: the first, which it always gives
+// itself, and the one it queues behind it; rank 1 does the rest meanwhile. Rank 0's main thread, answering rank
+// 1's requests, sleeps between polls: its CPU time is a small part of that
+// second, not all of it (as a spinning wait would make it).
+TEST_F(MpiRender, WaitingForWorkOrRequestsSleepsInsteadOfSpinning) {
+  const std::string args = scene("chex.sc") + " --size 256 256 --no-aa -q --threads 1";
+  const RunResult slow = render(2, "slow", args, "PRISM_MPI_SIMULATE=rank=0,tile_delay_ms=1000 ");
+  ASSERT_EQ(slow.exitCode, 0) << slow.err;
+  const nlohmann::json s = stats("slow");
+  ASSERT_EQ(s["ranks"].size(), 2u);
+  const int slowTiles = s["ranks"][0]["tiles"];
+  EXPECT_GE(slowTiles, 1);
+  EXPECT_LE(slowTiles, 2);
+  EXPECT_EQ(s["ranks"][1]["tiles"].get<int>(), 64 - slowTiles);
+  EXPECT_GE(s["wall_seconds"].get<double>(), 1.0);
+  EXPECT_LT(s["ranks"][0]["cpu_seconds"].get<double>(), 0.25 * s["wall_seconds"].get<double>());
+}
+
 // Rank 1 dies (SIGKILL) after its second tile: the job ends, not hangs, with
 // a non-zero status and mpirun's message naming the rank, and leaves no
 // picture and no statistics.

@@ -161,7 +161,8 @@ void WorkDispenser::run(int itemCount, int localWorkers,
       }
       if (localDone && !asking) break;
     }
-    poll = happened ? kPollInterval : std::min(2 * poll, kLongestPoll);
+    // A process waiting for its answer keeps polling often.
+    poll = happened || asking ? kPollInterval : std::min(2 * poll, kLongestPoll);
   }
   local.join();
   // A failure here: the caller ends the job (the others cannot finish

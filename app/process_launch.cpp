@@ -50,4 +50,12 @@ QuietStderr::~QuietStderr() {
 
 std::string QuietStderr::text() const { return impl_->captured.str(); }
 
+bool agreeOnSuccess(ProcessGroup* group, bool ok, const QuietStderr& quiet) {
+  if (!group) return ok;
+  const std::optional<ProcessGroup::Failure> failure = group->firstFailure(ok, quiet.text());
+  if (failure && group->rank() == 0 && failure->rank != 0)
+    std::cerr << "prism: error: on rank " << failure->rank << ":\n" << failure->message;
+  return !failure;
+}
+
 } // namespace prism

@@ -36,4 +36,11 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+// Where one process of a job could fail alone (a scene file it cannot read,
+// a folder rank 0 cannot write), the processes agree before going on, so
+// that none waits for one that has left. Collective under MPI: true when
+// `ok` on every process; otherwise rank 0 prints the first failing rank's
+// captured stderr (its own it printed already). Without a group: `ok`.
+bool agreeOnSuccess(ProcessGroup* group, bool ok, const QuietStderr& quiet);
+
 } // namespace prism

@@ -182,13 +182,7 @@ int runRenderCommand(const RenderCommandOptions& o, ProcessGroup* group) {
   // waits for another that has left.
   const bool speaks = !group || group->rank() == 0;
   QuietStderr quietRank(!speaks);
-  auto agree = [&](bool ok) {
-    if (!group) return ok;
-    const std::optional<ProcessGroup::Failure> failure = group->firstFailure(ok, quietRank.text());
-    if (failure && speaks && failure->rank != 0)
-      std::cerr << "prism: error: on rank " << failure->rank << ":\n" << failure->message;
-    return !failure;
-  };
+  auto agree = [&](bool ok) { return agreeOnSuccess(group, ok, quietRank); };
 
   if (const std::optional<std::string> problem = cameraOptionsProblem(o)) {
     std::cerr << "prism: error: " << *problem << "\n";

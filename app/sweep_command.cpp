@@ -2,8 +2,10 @@
 
 #include "cli_options.h"
 #include "load_scene.h"
+#include "process_launch.h"
 #include "progress.h"
 #include "render_command.h"
+#include "sweep_distributed.h"
 #include "sweep_plots.h"
 
 #include "core/io/image_io.h"
@@ -19,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -60,6 +63,13 @@ std::string progressBar(double fraction) {
          std::string(std::size_t(kWidth - filled), '.') + "]";
 }
 
+// Under MPI rank 0 hears only how many groups of settings the job finished.
+std::string distributedSweepLine(int done, int total, int processes, double elapsed) {
+  return "sweep: " + progressBar(total > 0 ? double(done) / total : 1.0) + " " +
+         std::to_string(done) + "/" + std::to_string(total) + " groups of settings over " +
+         std::to_string(processes) + " processes, " + duration(elapsed);
+}
+
 std::string sweepLine(const SweepProgress& p, double elapsed) {
   std::string line = "sweep: " + progressBar(p.fraction) + " " + std::to_string(p.done) + "/" +
                      std::to_string(p.total) + " settings, " + duration(elapsed);
@@ -94,8 +104,16 @@ nlohmann::ordered_json summaryJson(const SweepCommandOptions& o, const Reference
   };
 }
 
+// `ranks`: under MPI, each process's share (empty for one process).
 void printSummary(const ReferencePicture& reference, const std::vector<SweepRow>& rows,
-                  const std::string& dir) {
+                  const std::vector<RankStats>& ranks, const std::string& dir) {
+  if (!ranks.empty()) {
+    std::string groups;
+    for (const RankStats& r : ranks)
+      groups += (groups.empty() ? "" : ", ") + std::to_string(r.tiles);
+    std::fprintf(stderr, "processes       %zu, groups of settings rendered by each: %s\n",
+                 ranks.size(), groups.c_str());
+  }
   std::fprintf(stderr, "reference       %d samples per pixel, depth up to %d%s, %.1f s CPU\n",
                kReferenceSide * kReferenceSide, reference.deepest,
                reference.converged ? "" : " (a deeper trace still changed some pixel)",
@@ -138,27 +156,33 @@ CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& o) {
 }
 
 int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
-  (void)group; // distributed sweeps: not yet
+  // Under MPI every process runs this function, as in runRenderCommand: rank 0
+  // speaks for the job (progress, errors, the files) and the others stay
+  // quiet; where a process could fail alone, the processes agree first.
+  const bool speaks = !group || group->rank() == 0;
+  QuietStderr quietRank(!speaks);
+  auto agree = [&](bool ok) { return agreeOnSuccess(group, ok, quietRank); };
+
+  // Every process reads the scene itself.
   std::optional<Scene> loaded = loadSceneReporting(o.scene);
-  if (!loaded) return kExitUsage;
+  if (!agree(loaded.has_value())) return kExitUsage;
   // The folder before any rendering, so that a typo in its name costs no
   // sweep; after the scene, so that a scene error leaves no empty folder.
+  // Only rank 0 writes files.
   const fs::path dir = o.output;
-  const bool writable = succeeds([&] {
+  const bool writable = !speaks || succeeds([&] {
     fs::create_directories(dir);
     checkWritableFile(dir / "sweep.csv");
   });
-  if (!writable) return kExitFailure;
+  if (!agree(writable)) return kExitFailure;
   const Scene& scene = *loaded;
   const auto [width, height] = sweepSize(o, scene);
   RenderSettings size;
   size.width = width;
   size.height = height;
-  if (const std::optional<std::string> problem =
-          imageMemoryProblem(size, kSweepBytesPerPixel, "sweep")) {
-    std::cerr << "prism: error: " << *problem << "\n";
-    return kExitFailure;
-  }
+  const std::optional<std::string> problem = imageMemoryProblem(size, kSweepBytesPerPixel, "sweep");
+  if (problem) std::cerr << "prism: error: " << *problem << "\n";
+  if (!agree(!problem)) return kExitFailure;
 
   const auto accel = makeAccel(scene, AccelKind::Bvh);
   const int threads = resolveThreadCount(o.threads);
@@ -171,24 +195,53 @@ int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
   referenceSettings.height = height;
   ReferencePicture reference;
   std::vector<SweepRow> rows;
+  int groupsHere = 0;
   {
-    ProgressReporter reporter(!o.quiet);
+    ProgressReporter reporter(!o.quiet && speaks);
+    // Under MPI every process renders the whole reference itself, before any
+    // setting, rather than the reference being an item of the hand-out: a
+    // setting's error is measured where the setting is rendered (sending
+    // every setting's float picture to rank 0 instead would move about 400
+    // pictures), so each process needs the reference first. Rendered by all
+    // at once, it costs the job no more wall time than rank 0 rendering it
+    // while the others wait, and needs no transfer; it does not depend on
+    // the thread count (its samples are jittered by a hash), so every
+    // process holds the single-process sweep's reference.
     reference = renderReference(scene, *accel, referenceSettings, executor, [&](double f) {
       reporter.show([&](double elapsed) {
         return "sweep: reference " + progressBar(f) + " " + duration(elapsed);
       });
     });
-    rows = runSweep(scene, *accel, SweepGrid{}, reference, executor, [&](const SweepProgress& p) {
-      reporter.show([&](double elapsed) { return sweepLine(p, elapsed); });
-    });
+    if (group) {
+      DistributedSweep sweep = runSweepOverGroup(
+          *group, scene, *accel, SweepGrid{}, reference, executor, [&](int done, int total) {
+            reporter.show([&](double elapsed) {
+              return distributedSweepLine(done, total, group->size(), elapsed);
+            });
+          });
+      rows = std::move(sweep.rows);
+      groupsHere = sweep.groupsHere;
+    } else {
+      rows = runSweep(scene, *accel, SweepGrid{}, reference, executor, [&](const SweepProgress& p) {
+        reporter.show([&](double elapsed) { return sweepLine(p, elapsed); });
+      });
+    }
   }
   markParetoFront(rows);
-  const double cpuSeconds = processCpuSeconds() - cpuStart;
+  double cpuSeconds = processCpuSeconds() - cpuStart;
   const double wallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  std::vector<RankStats> ranks; // on rank 0 under MPI
+  if (group) {
+    // The job's CPU time: every process's (the rays are in the table).
+    ranks = group->gatherStats({group->rank(), hostName(), threads, groupsHere, 0, cpuSeconds});
+    cpuSeconds = 0.0;
+    for (const RankStats& r : ranks)
+      cpuSeconds += r.cpuSeconds;
+  }
 
   std::string warnings;
-  const bool written = succeeds([&] {
+  const bool written = !speaks || succeeds([&] {
     writeFileAtomically(dir / "sweep.csv", [&](std::ostream& out) { out << formatSweepCsv(rows); });
     const auto json =
         summaryJson(o, reference, referenceSettings, rows, threads, cpuSeconds, wallSeconds);
@@ -201,9 +254,12 @@ int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
                     ", exposed by avgmax of the pixel centres");
     warnings = writeSweepPlots(rows, dir.string(), fs::path(o.scene).stem().string());
   });
-  if (!written) return kExitFailure;
+  // The others wait for rank 0's files, so that every process ends with the
+  // job's status.
+  if (!agree(written)) return kExitFailure;
+  if (!speaks) return kExitOk;
   if (!warnings.empty()) std::cerr << "prism: warning: " << warnings << "\n";
-  if (!o.quiet) printSummary(reference, rows, dir.string());
+  if (!o.quiet) printSummary(reference, rows, ranks, dir.string());
   return kExitOk;
 }
 

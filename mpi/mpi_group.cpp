@@ -64,18 +64,21 @@ public:
     return stats;
   }
 
-  std::vector<std::string> distribute(int count,
-                                      const std::function<std::string(int)>& work) override {
+  std::vector<std::string> distribute(int count, const std::function<std::string(int)>& work,
+                                      const DistributeProgress& progress) override {
     // Each process runs one item at a time (an item uses all its threads).
     std::map<int, std::string> results;
     WorkDispenser dispenser(rank_, size_, calls_++);
     try {
-      dispenser.run(count, 1, [&](ItemQueue& queue) {
-        for (int item = queue.take(); item >= 0; item = queue.take()) {
-          results[item] = work(item);
-          queue.finished();
-        }
-      });
+      dispenser.run(
+          count, 1,
+          [&](ItemQueue& queue) {
+            for (int item = queue.take(); item >= 0; item = queue.take()) {
+              results[item] = work(item);
+              queue.finished();
+            }
+          },
+          progress);
     } catch (const std::exception& error) {
       std::fprintf(stderr, "prism: error: rank %d: %s\n", rank_, error.what());
       abort(1);

@@ -58,9 +58,16 @@ public:
   // Collective: items [0, count) run one at a time by whichever process asks
   // first (dynamically, like tiles); each item's `work` returns its result
   // as text. Rank 0 receives every result in item order; the others an empty
-  // vector. An exception in `work` ends the whole job (abort).
+  // vector. An exception in `work` ends the whole job (abort). On rank 0,
+  // `progress(done, count)`, if given, hears how many items the whole job
+  // has finished (from another thread than the one running `work`).
+  using DistributeProgress = std::function<void(int done, int total)>;
   virtual std::vector<std::string> distribute(int count,
-                                              const std::function<std::string(int)>& work) = 0;
+                                              const std::function<std::string(int)>& work,
+                                              const DistributeProgress& progress) = 0;
+  std::vector<std::string> distribute(int count, const std::function<std::string(int)>& work) {
+    return distribute(count, work, {});
+  }
 
   // Ends every process of the job at once with `status`: for a failure on
   // one process that the others, waiting for it, could not learn of.

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace prism {
 
@@ -105,16 +106,8 @@ std::vector<SweepSetting> SweepGrid::settings() const {
   return all;
 }
 
-std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const SweepGrid& grid,
-                               const ReferencePicture& reference, Executor& executor,
-                               const SweepProgressCallback& progress) {
-  const int width = reference.width, height = reference.height;
-  const double pixels = double(width) * double(height);
-  const std::vector<SweepSetting> settings = grid.settings();
-  std::vector<SweepRow> rows;
-  rows.reserve(settings.size());
-
-  // The groups: consecutive settings of one depth and bailout.
+std::vector<std::pair<std::size_t, std::size_t>>
+passOneGroups(const std::vector<SweepSetting>& settings) {
   std::vector<std::pair<std::size_t, std::size_t>> groups; // [first, last)
   for (std::size_t i = 0; i < settings.size(); ++i) {
     if (i == 0 || settings[i].depth != settings[i - 1].depth ||
@@ -122,15 +115,79 @@ std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const Swe
       groups.push_back({i, i});
     groups.back().second = i + 1;
   }
+  return groups;
+}
+
+std::vector<SweepRow> runSweepGroup(const Scene& scene, const Accel& accel,
+                                    std::span<const SweepSetting> group,
+                                    const ReferencePicture& reference, Executor& executor,
+                                    const std::function<void(std::size_t index)>& starting) {
+  const int width = reference.width, height = reference.height;
+  const double pixels = double(width) * double(height);
+  std::vector<SweepRow> rows;
+  if (group.empty()) return rows;
+  for (const SweepSetting& s : group)
+    if (s.depth != group.front().depth || s.bailout != group.front().bailout)
+      throw std::invalid_argument("runSweepGroup: the settings differ in depth or bailout");
+  rows.reserve(group.size());
+
+  // Pass 1 of this depth and bailout, which every setting of the group has.
+  SweepSetting centresOnly = group.front();
+  centresOnly.antialias = false;
+  const TimedRun pass1 = timedMean([&] {
+    return runTimed(scene, accel, renderSettingsOf(centresOnly, width, height), executor,
+                    Film(width, height), Pass1::Trace);
+  });
+
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    const SweepSetting& setting = group[i];
+    if (starting) starting(i);
+    SweepRow row;
+    row.setting = setting;
+    const TimedRun* picture = &pass1;
+    TimedRun pass2;
+    RayCounts counts = pass1.counts;
+    row.cpuSeconds = pass1.cpuSeconds;
+    row.wallSeconds = pass1.wallSeconds;
+    if (setting.antialias) {
+      pass2 = timedMean([&] {
+        return runTimed(scene, accel, renderSettingsOf(setting, width, height), executor,
+                        pass1.film, Pass1::Keep);
+      });
+      counts += pass2.counts;
+      row.cpuSeconds += pass2.cpuSeconds;
+      row.wallSeconds += pass2.wallSeconds;
+      picture = &pass2;
+    }
+    row.rays = perPixel(counts, pixels);
+    row.supersampled = double(std::count(picture->film.supersampled.begin(),
+                                         picture->film.supersampled.end(), std::uint8_t(1))) /
+                       pixels;
+    row.error = compareImages(picture->film.radiance, picture->avgmax, reference.radiance,
+                              reference.avgmax, width, height);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const SweepGrid& grid,
+                               const ReferencePicture& reference, Executor& executor,
+                               const SweepProgressCallback& progress) {
+  const std::vector<SweepSetting> settings = grid.settings();
+  const auto groups = passOneGroups(settings);
+  std::vector<SweepRow> rows;
+  rows.reserve(settings.size());
 
   TimeEstimate estimate;
   const auto start = std::chrono::steady_clock::now();
-  auto report = [&](std::size_t group, std::size_t inGroup, const SweepSetting& current) {
+  // Before setting `index` (of `settings`), the first `index` being done.
+  auto report = [&](std::size_t group, std::size_t index) {
     if (!progress) return;
+    const std::size_t inGroup = index - groups[group].first;
     SweepProgress p;
-    p.done = int(rows.size());
+    p.done = int(index);
     p.total = int(settings.size());
-    p.current = settingOptions(current);
+    p.current = settingOptions(settings[index]);
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     double remaining = 0.0;
@@ -146,54 +203,21 @@ std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const Swe
       p.etaSeconds = remaining;
       p.fraction = elapsed / std::max(elapsed + remaining, 1e-9);
     } else {
-      p.fraction = double(rows.size()) / double(std::max<std::size_t>(settings.size(), 1));
+      p.fraction = double(index) / double(std::max<std::size_t>(settings.size(), 1));
     }
     progress(p);
   };
 
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const auto groupStart = std::chrono::steady_clock::now();
-    const SweepSetting& first = settings[groups[g].first];
-    report(g, 0, first);
-
-    // Pass 1 of this depth and bailout, which every setting of the group has.
-    SweepSetting centresOnly = first;
-    centresOnly.antialias = false;
-    const TimedRun pass1 = timedMean([&] {
-      return runTimed(scene, accel, renderSettingsOf(centresOnly, width, height), executor,
-                      Film(width, height), Pass1::Trace);
-    });
-
-    for (std::size_t i = groups[g].first; i < groups[g].second; ++i) {
-      const SweepSetting& setting = settings[i];
-      report(g, i - groups[g].first, setting);
-      SweepRow row;
-      row.setting = setting;
-      const TimedRun* picture = &pass1;
-      TimedRun pass2;
-      RayCounts counts = pass1.counts;
-      row.cpuSeconds = pass1.cpuSeconds;
-      row.wallSeconds = pass1.wallSeconds;
-      if (setting.antialias) {
-        pass2 = timedMean([&] {
-          return runTimed(scene, accel, renderSettingsOf(setting, width, height), executor,
-                          pass1.film, Pass1::Keep);
-        });
-        counts += pass2.counts;
-        row.cpuSeconds += pass2.cpuSeconds;
-        row.wallSeconds += pass2.wallSeconds;
-        picture = &pass2;
-      }
-      row.rays = perPixel(counts, pixels);
-      row.supersampled = double(std::count(picture->film.supersampled.begin(),
-                                           picture->film.supersampled.end(), std::uint8_t(1))) /
-                         pixels;
-      row.error = compareImages(picture->film.radiance, picture->avgmax, reference.radiance,
-                                reference.avgmax, width, height);
-      rows.push_back(row);
-    }
+    const auto [first, last] = groups[g];
+    report(g, first);
+    const std::vector<SweepRow> groupRows =
+        runSweepGroup(scene, accel, std::span(settings).subspan(first, last - first), reference,
+                      executor, [&](std::size_t i) { report(g, first + i); });
+    rows.insert(rows.end(), groupRows.begin(), groupRows.end());
     estimate.measured(
-        first.depth,
+        settings[first].depth,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - groupStart).count());
   }
   if (progress) {

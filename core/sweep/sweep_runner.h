@@ -14,8 +14,11 @@
 #include "core/sweep/reference.h"
 #include "core/sweep/sweep_table.h"
 
+#include <cstddef>
 #include <functional>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace prism {
@@ -41,6 +44,21 @@ struct SweepProgress {
 };
 
 using SweepProgressCallback = std::function<void(const SweepProgress&)>;
+
+// The settings of `settings` that share their pass 1: runs of consecutive
+// settings of one depth and bailout, as [first, last) index ranges, in order.
+std::vector<std::pair<std::size_t, std::size_t>>
+passOneGroups(const std::vector<SweepSetting>& settings);
+
+// Renders and measures the settings of one such group (one depth and
+// bailout) at the reference's size on `executor`: their pass 1 traced once,
+// each row counting it in full. Rows in the group's order, the Pareto front
+// not marked. `starting(i)`, if given, is called before group[i] is rendered.
+// What runSweep does for each group, and what a distributed sweep hands out.
+std::vector<SweepRow> runSweepGroup(const Scene& scene, const Accel& accel,
+                                    std::span<const SweepSetting> group,
+                                    const ReferencePicture& reference, Executor& executor,
+                                    const std::function<void(std::size_t index)>& starting = {});
 
 // Renders every setting of `grid` at the reference's size on `executor`,
 // one after the other (each on all of the executor's workers), and compares

@@ -3,6 +3,7 @@
 // threads; tiles go to whichever rank asks, so a slowed rank does fewer; a
 // killed rank ends the job with a message and no picture; a scene error is
 // reported once with the usage status (docs/distributed.md).
+#include "tests/mpi_run.h"
 #include "tests/test_files.h"
 
 #include <OpenImageIO/imageio.h>
@@ -15,15 +16,6 @@
 
 namespace prism::test {
 namespace {
-
-// Open MPI as root on one machine: more ranks than cores, and no
-// single-copy transfers between processes (containers often forbid the
-// ptrace they need). `timeout` bounds a run that would hang.
-std::string mpirun(int ranks) {
-  return "timeout 120 mpirun --allow-run-as-root --oversubscribe --mca "
-         "btl_vader_single_copy_mechanism none -np " +
-         std::to_string(ranks) + " ";
-}
 
 std::optional<std::vector<float>> readRadiance(const fs::path& path) {
   auto in = OIIO::ImageInput::open(path.string());
@@ -38,6 +30,10 @@ std::optional<std::vector<float>> readRadiance(const fs::path& path) {
 
 class MpiRender : public ::testing::Test {
 protected:
+  void SetUp() override {
+    ASSERT_FALSE(mpirunOnPath().empty())
+        << "mpirun is not on PATH: the MPI tests need Open MPI's launcher (openmpi-bin)";
+  }
   ScratchDir dir_;
   std::string scene(const std::string& name) const {
     return quoted(fs::path(PRISM_SOURCE_DIR) / "scenes" / name);
@@ -46,7 +42,7 @@ protected:
   // OUT.tiff (float radiance) and OUT.json.
   RunResult render(int ranks, const std::string& out, const std::string& args,
                    const std::string& env = "") {
-    const std::string launcher = ranks > 0 ? mpirun(ranks) : "";
+    const std::string launcher = ranks > 0 ? mpirunPrefix(ranks) : "";
     return run(dir_.path(), env + launcher + quoted(PRISM_BINARY) + " render " + args + " -o " +
                                 quoted(dir_ / (out + ".tiff")) + " --float --stats-json " +
                                 quoted(dir_ / (out + ".json")));
@@ -172,7 +168,7 @@ TEST_F(MpiRender, ASceneErrorIsReportedOnceWithStatusTwo) {
 // An output rank 0 cannot write stops every rank before any work, once.
 TEST_F(MpiRender, AnUnwritableOutputStopsEveryRankBeforeTheRender) {
   const RunResult unwritable =
-      run(dir_.path(), mpirun(2) + quoted(PRISM_BINARY) + " render " + scene("glass.sc") +
+      run(dir_.path(), mpirunPrefix(2) + quoted(PRISM_BINARY) + " render " + scene("glass.sc") +
                                  " -o " + quoted(dir_ / "no" / "such" / "dir" / "x.tiff") + " -q");
   EXPECT_EQ(unwritable.exitCode, 1) << unwritable.err;
   const std::size_t first = unwritable.err.find("prism: error:");

@@ -33,11 +33,15 @@ inline std::filesystem::path mpirunOnPath() {
 }
 
 // The prefix of a command run as an MPI job of `processes` processes (Open
-// MPI's mpirun): allowed as root (CI containers) and with more processes
-// than cores (this 2-core machine runs -np 3), e.g.
+// MPI's mpirun): allowed as root (CI containers), with more processes than
+// cores (this 2-core machine runs -np 3), and without single-copy transfers
+// between processes (containers often forbid the ptrace they need); a job
+// that hangs is ended after 2 minutes (status 124), e.g.
 //   mpirunPrefix(2) + quoted(PRISM_BINARY) + " sweep ..."
 inline std::string mpirunPrefix(int processes) {
-  return "mpirun --allow-run-as-root --oversubscribe -np " + std::to_string(processes) + " ";
+  return "timeout 120 mpirun --allow-run-as-root --oversubscribe --mca "
+         "btl_vader_single_copy_mechanism none -np " +
+         std::to_string(processes) + " ";
 }
 
 } // namespace prism::test

@@ -88,6 +88,11 @@ int runPrism(int argc, char** argv) {
   // Under an MPI launcher render and sweep run as one job over the processes
   // (docs/distributed.md); the other commands are for one process.
   std::unique_ptr<ProcessGroup> group;
+  if (const std::optional<std::string> problem = srunWithoutMpiProblem();
+      problem && (renderCmd->parsed() || sweepCmd->parsed())) {
+    std::cerr << "prism: error: " << *problem << "\n";
+    return kExitUsage;
+  }
   if (startedByMpiLauncher()) {
     if (!renderCmd->parsed() && !sweepCmd->parsed()) {
       std::cerr << "prism: error: only `prism render` and `prism sweep` run under an MPI "

@@ -17,6 +17,15 @@ bool startedByMpiLauncher() {
   return false;
 }
 
+std::optional<std::string> srunWithoutMpiProblem() {
+  const char* tasks = std::getenv("SLURM_STEP_NUM_TASKS");
+  if (startedByMpiLauncher() || !tasks || std::atoi(tasks) <= 1) return std::nullopt;
+  return std::string("started by srun as one of ") + tasks +
+         " tasks without an MPI process manager: every task would render the whole "
+         "picture; run `srun --mpi=pmix ...` or `mpirun ...` inside the allocation "
+         "(docs/distributed.md)";
+}
+
 std::unique_ptr<ProcessGroup> joinProcessGroup(std::string& error) {
   const SharedModule module = loadSharedModule("libprism_mpi.so");
   if (!module.handle) {

@@ -7,6 +7,7 @@
 #include "core/render/process_group.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace prism {
@@ -14,6 +15,11 @@ namespace prism {
 // True when the environment says an MPI launcher started this process
 // (Open MPI's OMPI_COMM_WORLD_SIZE, PMI's PMI_SIZE, PMIx's PMIX_RANK).
 bool startedByMpiLauncher();
+
+// When Slurm's srun started this process as one of several tasks but with no
+// MPI process manager (no --mpi=pmix): every task would render the whole
+// picture and write the same file, so the command refuses, saying why.
+std::optional<std::string> srunWithoutMpiProblem();
 
 // The job's process group: null, with `error` saying why, when the MPI module
 // is missing (a build without MPI) or MPI does not start.

@@ -176,6 +176,20 @@ TEST_F(MpiRender, AnUnwritableOutputStopsEveryRankBeforeTheRender) {
   EXPECT_EQ(unwritable.err.find("prism: error:", first + 1), std::string::npos) << unwritable.err;
 }
 
+// srun starting several tasks with no MPI process manager would make each
+// render the whole picture into the same file: refused, saying what to run.
+TEST_F(MpiRender, SrunWithoutAnMpiProcessManagerIsRefused) {
+  const RunResult refused =
+      render(0, "srun", scene("table.sc") + " --size 16 12 -q", "SLURM_STEP_NUM_TASKS=4 ");
+  EXPECT_EQ(refused.exitCode, 2);
+  EXPECT_NE(refused.err.find("srun --mpi=pmix"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir_ / "srun.tiff"));
+  // One task is a plain run.
+  EXPECT_EQ(render(0, "one", scene("table.sc") + " --size 16 12 -q", "SLURM_STEP_NUM_TASKS=1 ")
+                .exitCode,
+            0);
+}
+
 // MPI costs nothing where it is not used: a render started without a
 // launcher loads neither the MPI module nor libmpi (the dynamic loader's
 // own log says what it loads); under mpirun, even of one rank, it loads both.

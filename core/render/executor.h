@@ -4,7 +4,9 @@
 // previewer, executors of the tests' own (one worker, items in reverse order)
 // to show that the picture does not depend on the order, and the distributed
 // executor (mpi/mpi_executor.h) that runs a share of the items on each MPI
-// process and exchanges samples at the reduction points below.
+// process and exchanges samples at the reduction points below. A distributed
+// executor needs pass 1 in one level (render()'s): with coarse levels a
+// tile's centres would be traced on several processes.
 #pragma once
 
 #include "core/math/exact_sum.h"
@@ -48,7 +50,8 @@ public:
   // the tiles each process traced). Nothing to do in shared memory.
   virtual void sumOverProcesses(ExactSum& sum) { (void)sum; }
 
-  // Reduction point 1, after pass 1. `tiles` are the schedule's work items;
+  // Reduction point 1, after pass 1 (not called without antialiasing,
+  // whose picture reads no neighbours). `tiles` are the schedule's work items;
   // `traced[t]` is 1 for the tiles whose centres this process traced. On
   // return `film.centre` must also hold, around each of those tiles, the
   // ring of neighbours' centres that pass 2's decision for its pixels reads.

@@ -114,7 +114,8 @@ public:
                                                            std::size_t(tile.x1 - tile.x0)));
     }
     executor_.sumOverProcesses(sum);
-    executor_.completePass1(film_, s_.tiles_, traced_);
+    // The ring of neighbours is for pass 2's decisions only.
+    if (!s_.settings_.noAa) executor_.completePass1(film_, s_.tiles_, traced_);
     return averageMax(sum, film_.pixelCount());
   }
 

@@ -17,8 +17,8 @@ namespace prism {
 bool startedByMpiLauncher();
 
 // When Slurm's srun started this process as one of several tasks but with no
-// MPI process manager (no --mpi=pmix): every task would render the whole
-// picture and write the same file, so the command refuses, saying why.
+// MPI process manager (no --mpi=pmix): every task would do the whole job and
+// write the same files, so render and sweep refuse, saying why.
 std::optional<std::string> srunWithoutMpiProblem();
 
 // The job's process group: null, with `error` saying why, when the MPI module

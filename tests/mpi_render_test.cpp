@@ -152,6 +152,37 @@ TEST_F(MpiRender, AKilledRankEndsTheJobWithAMessageAndNoFiles) {
         << "a leftover: " << entry.path();
 }
 
+// Ctrl-C on mpirun once both ranks run (rank 0 is slowed to five seconds a
+// tile, so the render is far from done): every rank ends, the status is not
+// success, and nothing is written.
+TEST_F(MpiRender, CtrlCOnMpirunStopsEveryRankAndWritesNothing) {
+  const fs::path out = dir_ / "interrupted.tiff";
+  const std::string ranks = std::string("^") + PRISM_BINARY + " render .*" + out.string();
+  const std::string script =
+      "PRISM_MPI_SIMULATE=rank=0,tile_delay_ms=5000 " + mpirunPrefix(2) + quoted(PRISM_BINARY) +
+      " render " + scene("glass.sc") + " --size 320 240 --threads 1 -q -o " + quoted(out) +
+      " & job=$!\n"
+      // Until both ranks exist (at most 60 s).
+      "i=0; while [ \"$(pgrep -c -f '" + ranks + "')\" -lt 2 ] && [ $i -lt 1200 ]; do\n"
+      "  sleep 0.05; i=$((i+1)); done\n"
+      "echo \"ranks seen: $(pgrep -c -f '" + ranks + "')\"\n"
+      "kill -INT $job\n"
+      "wait $job; echo \"status $?\"\n"
+      "echo \"ranks left: $(pgrep -c -f '" + ranks + "')\"\n";
+  writeFile(dir_ / "interrupt.sh", script);
+  const RunResult run = test::run(dir_.path(), "sh " + quoted(dir_ / "interrupt.sh"));
+  EXPECT_NE(run.out.find("ranks seen: 2"), std::string::npos) << run.out << run.err;
+  const std::size_t at = run.out.find("status ");
+  ASSERT_NE(at, std::string::npos) << run.out;
+  const int status = std::stoi(run.out.substr(at + 7));
+  EXPECT_NE(status, 0);
+  EXPECT_NE(status, 124) << "the job hung until the timeout";
+  EXPECT_NE(run.out.find("ranks left: 0"), std::string::npos) << run.out;
+  for (const auto& entry : fs::directory_iterator(dir_.path()))
+    EXPECT_EQ(entry.path().filename().string().find("interrupted"), std::string::npos)
+        << "a leftover: " << entry.path();
+}
+
 // Every rank reads the scene and fails the same way; only rank 0 says so,
 // and the job's status is the usage status of a single process.
 TEST_F(MpiRender, ASceneErrorIsReportedOnceWithStatusTwo) {

@@ -210,7 +210,8 @@ std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const Swe
 
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const auto groupStart = std::chrono::steady_clock::now();
-    const auto [first, last] = groups[g];
+    // Not a structured binding: Clang 14 cannot capture one in a lambda.
+    const std::size_t first = groups[g].first, last = groups[g].second;
     report(g, first);
     const std::vector<SweepRow> groupRows =
         runSweepGroup(scene, accel, std::span(settings).subspan(first, last - first), reference,

@@ -15,11 +15,22 @@ CLI::Option* addRangedOption(CLI::App& command, const std::string& name, T& valu
   return command.add_option(name, value, help)->capture_default_str()->check(CLI::Range(min, max));
 }
 
-// The scene file every rendering command takes first.
-inline CLI::Option* addSceneArgument(CLI::App& command, std::string& scene) {
-  return command.add_option("scene", scene, "Scene file (.sc, .nff or .obj)")
+// The scene file every rendering command takes first. `orStdin`: "-" is
+// also accepted (the scene read from standard input).
+inline CLI::Option* addSceneArgument(CLI::App& command, std::string& scene, bool orStdin = false) {
+  if (!orStdin)
+    return command.add_option("scene", scene, "Scene file (.sc, .nff or .obj)")
+        ->required()
+        ->check(CLI::ExistingFile);
+  return command
+      .add_option("scene", scene, "Scene file (.sc, .nff or .obj), or - for .sc text on stdin")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(CLI::Validator(
+          [](std::string& name) {
+            std::string copy = name;
+            return name == "-" ? std::string() : CLI::ExistingFile(copy);
+          },
+          "FILE or -"));
 }
 
 } // namespace prism

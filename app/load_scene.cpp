@@ -3,13 +3,19 @@
 #include "core/io/scene_loader.h"
 
 #include <iostream>
+#include <iterator>
 
 namespace prism {
 
 std::optional<Scene> loadSceneReporting(const std::string& path) {
   std::vector<Diagnostic> warnings;
   try {
-    Scene scene = loadAnyScene(path, &warnings);
+    Scene scene = [&] {
+      if (path != "-") return loadAnyScene(path, &warnings);
+      const std::string text{std::istreambuf_iterator<char>(std::cin),
+                             std::istreambuf_iterator<char>()};
+      return parseScene(text, "<stdin>");
+    }();
     for (const Diagnostic& d : warnings)
       std::cerr << formatWarning(d) << "\n";
     return scene;

@@ -12,6 +12,8 @@
 namespace prism {
 
 // The scene at `path` (.sc, .nff or .obj), or nothing after printing why not.
+// "-" reads .sc text from standard input, named `<stdin>` in messages, its
+// includes resolved against the working directory.
 std::optional<Scene> loadSceneReporting(const std::string& path);
 
 // Runs `io` (checking or writing files); if it throws, prints

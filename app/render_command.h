@@ -18,9 +18,14 @@ class App;
 
 namespace prism {
 
+// "-" as a file name (docs/command-line.md): the scene read from standard
+// input, the picture or the JSON statistics written to standard output.
+inline constexpr const char* kStdio = "-";
+
 struct RenderCommandOptions {
-  std::string scene;
-  std::string output;         // image path; the format follows its extension
+  std::string scene;          // a file, or "-": the .sc text on standard input
+  std::string output;         // image path; the format follows its extension ("-": stdout)
+  std::string format;         // with `-o -`: the picture's format ("png", "tiff", ...)
   std::optional<int> depth;   // max ray depth (default 5)
   double thresh = 0.1;        // antialiasing threshold
   std::vector<int> size;      // W H, overriding the scene's `resolution`
@@ -32,8 +37,11 @@ struct RenderCommandOptions {
   bool noAa = false;      // pass 1 only
   double bailout = 0.0;   // W levels; 0 traces exactly
   bool floatTiff = false; // write float radiance instead of 8-bit pixels
+  bool srgb = false;      // 8-bit values sRGB-encoded after exposure
+  double scale = 100.0;   // percent of the scene's resolution (not with --size)
+  std::vector<int> crop;  // X0 Y0 X1 Y1: pass 2 and the output only in this region
   AccelKind accel = AccelKind::Bvh;
-  std::string statsJson;  // where to write the statistics as JSON
+  std::string statsJson;  // where to write the statistics as JSON ("-": stdout)
   std::vector<int> pixel; // X Y: print this pixel's ray tree instead of rendering
   bool quiet = false;     // no progress, no statistics on stderr
 };
@@ -64,7 +72,8 @@ bool hasCameraOptions(const RenderCommandOptions& options);
 
 // The one place the options become render settings, for `render`, `view` and
 // its headless fallback: --size over the scene's resolution, depth, threshold,
-// jitter, no-AA, bailout, threads.
+// jitter, no-AA, bailout, threads; --scale (render only) shrinks the scene's
+// resolution to PERCENT of each side, rounded, at least 1 pixel.
 RenderSettings renderSettings(const RenderCommandOptions& options, const Scene& scene);
 
 // Why an image of `settings`' size, at `bytesPerPixel`, cannot fit in memory

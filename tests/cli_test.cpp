@@ -4,8 +4,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/progress.h"
+#include "core/render/exposure.h"
 #include "test_files.h"
+#include "test_pictures.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -392,6 +397,267 @@ TEST_F(Cli, InvalidCameraOverridesExitWith2AndSayWhy) {
   }
   // CLI11 itself insists on three numbers.
   EXPECT_EQ(prism("render " + s + " --eye 1 2 -q -o " + out.string()).exitCode, 2);
+}
+
+// The sRGB transfer function (IEC 61966-2-1), written out here rather than
+// taken from the renderer.
+double srgbEncode(double linear) {
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+// Whether a PNG file holds a chunk of type `type` (its length, then its type).
+bool hasPngChunk(const std::string& bytes, const std::string& type) {
+  return bytes.find(type) != std::string::npos &&
+         bytes.find(std::string("\0\0\0\x01", 4) + type) != std::string::npos;
+}
+
+TEST(Exposure, SrgbEncodesTheExposedFraction) {
+  EXPECT_EQ(prism::exposeChannelSrgb(0.0f, 1.0f), 0);
+  EXPECT_EQ(prism::exposeChannelSrgb(-1.0f, 1.0f), 0);
+  EXPECT_EQ(prism::exposeChannelSrgb(NAN, 1.0f), 0);
+  EXPECT_EQ(prism::exposeChannelSrgb(255.0f, 1.0f), 255);
+  EXPECT_EQ(prism::exposeChannelSrgb(1000.0f, 1.0f), 255);
+  // Linear 128 of 255 is about 0.502: sRGB 0.7354..., 187.5 -> 188.
+  EXPECT_EQ(prism::exposeChannelSrgb(64.0f, 2.0f), std::lround(255.0 * srgbEncode(128.0 / 255.0)));
+  // The linear segment near black: 0.5 of 255 -> 12.92 * 0.5 = 6.46 -> 6.
+  EXPECT_EQ(prism::exposeChannelSrgb(0.5f, 1.0f), 6);
+}
+
+// --srgb: the exposed value, as a fraction of 255 clamped to 1, through the
+// sRGB transfer function; the PNG carries an sRGB chunk, the TIFF says so in
+// its ImageDescription. Checked against the float radiance of the same render.
+TEST_F(Cli, SrgbEncodesTheExposedPictureAndSaysSo) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const std::string common = " --size 40 30 --depth 3 --thresh 0.2 -q";
+  const fs::path png = dir_ / "srgb.png", tiff = dir_ / "srgb.tiff", exr = dir_ / "o.exr";
+  const fs::path json = dir_ / "stats.json";
+  ASSERT_EQ(prism("render " + s + common + " --srgb -o " + png.string() + " --stats-json " +
+                  json.string())
+                .exitCode,
+            0);
+  ASSERT_EQ(prism("render " + s + common + " --srgb -o " + tiff.string()).exitCode, 0);
+  ASSERT_EQ(prism("render " + s + common + " -o " + exr.string()).exitCode, 0);
+  const std::optional<prism::test::Picture> picture = prism::test::readPicture(png);
+  ASSERT_TRUE(picture);
+  ASSERT_EQ(picture->width, 40);
+  ASSERT_EQ(picture->channels, 3);
+  auto raw = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(raw);
+  std::vector<float> radiance(40 * 30 * 3);
+  ASSERT_TRUE(raw->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, radiance.data()));
+  const double avgmax = nlohmann::json::parse(slurp(json))["avgmax"].get<double>();
+  std::size_t exact = 0, middle = 0;
+  for (std::size_t i = 0; i < radiance.size(); ++i) {
+    const double e = std::clamp(double(radiance[i]) * 128.0 / avgmax / 255.0, 0.0, 1.0);
+    const double expected = std::round(255.0 * srgbEncode(e));
+    EXPECT_NEAR(double(picture->pixels[i]), expected, 1.0) << "channel " << i;
+    exact += double(picture->pixels[i]) == expected;
+    middle += expected > 20 && expected < 235;
+  }
+  EXPECT_GE(double(exact), 0.99 * double(radiance.size()));
+  EXPECT_GT(middle, 100u); // the test sees the curve, not only black and white
+  // The tags.
+  auto in = OIIO::ImageInput::open(png.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().get_string_attribute("oiio:ColorSpace"), "sRGB");
+  EXPECT_TRUE(hasPngChunk(slurp(png), "sRGB"));
+  EXPECT_NE(in->spec().get_string_attribute("ImageDescription").find("sRGB-encoded"),
+            std::string::npos);
+  const std::optional<prism::test::Picture> fromTiff = prism::test::readPicture(tiff);
+  ASSERT_TRUE(fromTiff);
+  EXPECT_TRUE(prism::test::sameRgb(*fromTiff, *picture));
+  auto tiffIn = OIIO::ImageInput::open(tiff.string());
+  ASSERT_TRUE(tiffIn);
+  EXPECT_NE(tiffIn->spec().get_string_attribute("ImageDescription").find("sRGB-encoded"),
+            std::string::npos)
+      << tiffIn->spec().get_string_attribute("ImageDescription");
+  // The default stays the model's linear values, with no sRGB chunk.
+  const fs::path linear = dir_ / "linear.png";
+  ASSERT_EQ(prism("render " + s + common + " -o " + linear.string()).exitCode, 0);
+  EXPECT_FALSE(hasPngChunk(slurp(linear), "sRGB"));
+  const std::optional<prism::test::Picture> plain = prism::test::readPicture(linear);
+  ASSERT_TRUE(plain);
+  EXPECT_FALSE(prism::test::sameRgb(*plain, *picture));
+  // Float pictures are not exposed: --srgb with them is a usage error.
+  EXPECT_EQ(prism("render " + s + common + " --srgb -o " + exr.string()).exitCode, 2);
+  EXPECT_EQ(
+      prism("render " + s + common + " --srgb --float -o " + (dir_ / "f.tif").string()).exitCode,
+      2);
+  EXPECT_FALSE(fs::exists(dir_ / "f.tif"));
+}
+
+// `-o -` writes the picture's bytes to stdout (the format from --format),
+// `--stats-json -` the statistics, `prism render -` reads the scene from stdin.
+TEST_F(Cli, DashIsStandardInputOrOutput) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const std::string common = " --size 24 16 --depth 3 -q";
+  const fs::path file = dir_ / "file.png";
+  ASSERT_EQ(prism("render " + s + common + " -o " + file.string()).exitCode, 0);
+  const RunResult piped = prism("render " + s + common + " -o - --format png");
+  ASSERT_EQ(piped.exitCode, 0) << piped.err;
+  EXPECT_EQ(piped.out, slurp(file)); // PNG bytes carry no time stamp
+  writeFile(dir_ / "piped.png", piped.out);
+  const std::optional<prism::test::Picture> read = prism::test::readPicture(dir_ / "piped.png");
+  ASSERT_TRUE(read);
+  EXPECT_EQ(read->width, 24);
+  // Another format, through a pipe as well; OpenImageIO reads what came out.
+  const RunResult tiff = runCaptured(
+      quoted(PRISM_BINARY) + " render " + s + common + " -o - --format TIFF | cat", dir_);
+  ASSERT_EQ(tiff.exitCode, 0) << tiff.err;
+  writeFile(dir_ / "piped.tif", tiff.out);
+  const std::optional<prism::test::Picture> readTiff = prism::test::readPicture(dir_ / "piped.tif");
+  ASSERT_TRUE(readTiff);
+  EXPECT_TRUE(prism::test::sameRgb(*readTiff, *read));
+  const RunResult exr = prism("render " + s + common + " -o - --format .exr");
+  ASSERT_EQ(exr.exitCode, 0) << exr.err;
+  writeFile(dir_ / "piped.exr", exr.out);
+  auto exrIn = OIIO::ImageInput::open((dir_ / "piped.exr").string());
+  ASSERT_TRUE(exrIn);
+  EXPECT_EQ(exrIn->spec().width, 24);
+  // No temporary is left behind in the temporary directory.
+  for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+    EXPECT_EQ(entry.path().filename().string().find(".prism-"), std::string::npos) << entry.path();
+
+  // The statistics on stdout; the progress and statistics text stay on stderr.
+  const RunResult stats = prism("render " + s + " --size 24 16 --depth 3 -o " +
+                                (dir_ / "o.png").string() + " --stats-json -");
+  ASSERT_EQ(stats.exitCode, 0) << stats.err;
+  const auto parsed = nlohmann::json::parse(stats.out);
+  EXPECT_EQ(parsed["width"], 24);
+  EXPECT_EQ(parsed["pixels"], 24 * 16);
+  EXPECT_NE(stats.err.find("rays per pixel"), std::string::npos);
+
+  // The usage errors.
+  EXPECT_EQ(prism("render " + s + common + " -o - --stats-json -").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + common + " -o -").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + common + " -o " + (dir_ / "x.png").string() + " --format tiff")
+                .exitCode,
+            2);
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+  const RunResult unknown = prism("render " + s + common + " -o - --format nosuchformat");
+  EXPECT_EQ(unknown.exitCode, 1);
+  EXPECT_NE(unknown.err.find("--format nosuchformat: no image format"), std::string::npos)
+      << unknown.err;
+  EXPECT_TRUE(unknown.out.empty());
+
+  // The scene from stdin, its include resolved against the working directory.
+  write("parts/ball.sc", "sphere 0 0 0 1\n");
+  write("main.sc", "eye 0 0 4\nlookat 0 0 0\nlight 2 3 4 30 30 30\n"
+                   "surface 1 0.5 0.2 0.8 0.2 0 20 1\ninclude parts/ball.sc\n");
+  ASSERT_EQ(prism("render " + (dir_ / "main.sc").string() + common + " -o " +
+                  (dir_ / "want.png").string())
+                .exitCode,
+            0);
+  const RunResult fromStdin =
+      prism::test::run(dir_, quoted(PRISM_BINARY) + " render -" + common + " -o got.png < main.sc");
+  ASSERT_EQ(fromStdin.exitCode, 0) << fromStdin.err;
+  EXPECT_EQ(slurp(dir_ / "got.png"), slurp(dir_ / "want.png"));
+  EXPECT_EQ(slurp(dir_ / "want.png"), slurp(file)); // the include is the same sphere
+  // Both ends at once: a scene piped in, the picture piped out.
+  const RunResult through = prism::test::run(dir_, "cat main.sc | " + quoted(PRISM_BINARY) +
+                                                       " render -" + common + " -o - --format png");
+  ASSERT_EQ(through.exitCode, 0) << through.err;
+  EXPECT_EQ(through.out, slurp(file));
+  // A scene error on stdin is located in <stdin>.
+  write("bad.sc", "eye 0 0 4\nsphere 0 0 0 -1\n");
+  const RunResult bad =
+      prism::test::run(dir_, quoted(PRISM_BINARY) + " render -" + common + " -o bad.png < bad.sc");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("<stdin>:2:"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad.png"));
+}
+
+// --scale renders at a share of the scene's resolution, each side rounded
+// (half away from zero), at least one pixel.
+TEST_F(Cli, ScaleShrinksTheScenesResolution) {
+  const std::string s = write("r.sc", std::string("resolution 41 30\n") + kSmallScene).string();
+  const fs::path out = dir_ / "o.png";
+  const struct {
+    std::string percent;
+    int width, height;
+  } cases[] = {{"50", 21, 15}, {"100", 41, 30}, {"10", 4, 3}, {"1", 1, 1}, {"0.5", 1, 1}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.percent);
+    const RunResult r = prism("render " + s + " --scale " + c.percent + " -q -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::optional<prism::test::Picture> picture = prism::test::readPicture(out);
+    ASSERT_TRUE(picture);
+    EXPECT_EQ(picture->width, c.width);
+    EXPECT_EQ(picture->height, c.height);
+  }
+  for (const char* bad : {"--scale 0", "--scale -5", "--scale 101", "--scale 50 --size 10 10"})
+    EXPECT_EQ(prism("render " + s + " " + bad + " -q -o " + (dir_ / "x.png").string()).exitCode, 2)
+        << bad;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// --crop renders pass 2 only inside the region and writes only it, exposed
+// by the whole frame's avgmax: the region of the full render, pixel for pixel.
+TEST_F(Cli, CropIsTheRegionOfTheFullRender) {
+  const std::string s = write("s.sc", kSmallScene).string();
+  const std::string common = " --size 40 30 --depth 3 --thresh 0.05 -q";
+  const fs::path full = dir_ / "full.png", part = dir_ / "part.png";
+  const fs::path fullJson = dir_ / "full.json", partJson = dir_ / "part.json";
+  ASSERT_EQ(
+      prism("render " + s + common + " -o " + full.string() + " --stats-json " + fullJson.string())
+          .exitCode,
+      0);
+  const RunResult r = prism("render " + s + common + " --crop 6 4 29 21 -o " + part.string() +
+                            " --stats-json " + partJson.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::optional<prism::test::Picture> whole = prism::test::readPicture(full);
+  const std::optional<prism::test::Picture> region = prism::test::readPicture(part);
+  ASSERT_TRUE(whole && region);
+  ASSERT_EQ(region->width, 23);
+  ASSERT_EQ(region->height, 17);
+  for (int y = 0; y < region->height; ++y)
+    for (int x = 0; x < region->width; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(region->at(x, y)[c], whole->at(x + 6, y + 4)[c]) << x << ", " << y;
+  // Pass 2 ran inside the region only: fewer pixels supersampled, but some
+  // (the sphere's edge crosses the region), and the same avgmax.
+  const auto fullStats = nlohmann::json::parse(slurp(fullJson));
+  const auto partStats = nlohmann::json::parse(slurp(partJson));
+  EXPECT_GT(partStats["supersampled_pixels"].get<int>(), 0);
+  EXPECT_LT(partStats["supersampled_pixels"].get<int>(),
+            fullStats["supersampled_pixels"].get<int>());
+  EXPECT_EQ(partStats["avgmax"].get<double>(), fullStats["avgmax"].get<double>());
+  // The whole frame as the region is the full render.
+  ASSERT_EQ(prism("render " + s + common + " --crop 0 0 40 30 -o " + part.string()).exitCode, 0);
+  EXPECT_EQ(slurp(part), slurp(full));
+  // A region outside the image, or empty, is a usage error.
+  for (const char* bad : {"--crop 0 0 41 30", "--crop 5 5 5 10", "--crop 10 5 4 8",
+                          "--crop 0 0 10 31", "--crop 1 2 3"})
+    EXPECT_EQ(
+        prism("render " + s + common + " " + bad + " -o " + (dir_ / "x.png").string()).exitCode, 2)
+        << bad;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// The progress line's time left: pass 1's from its own pace, and no guess
+// at pass 2 until it runs; pass 2's from its own pace since pass 1 ended.
+TEST(Progress, TheLineGivesTheTimeLeftAtThePaceSoFar) {
+  using prism::progressLine;
+  // Pass 2 began at 3 s; 26% of it (63% of the render) in 1.1 s more.
+  EXPECT_EQ(progressLine({2, 0.63}, 4.1, 3.0, true),
+            "rendering: pass 2,  63% done, 4.1 s, about 3.1 s left");
+  // A tenth of pass 1 in 1.2 s: 10.8 s more for pass 1, pass 2 unknown.
+  EXPECT_EQ(progressLine({1, 0.05}, 1.2, 0.0, true),
+            "rendering: pass 1,   5% done, 1.2 s, about 10.8 s left in pass 1, then pass 2");
+  // --no-aa: pass 1 is the whole render, and its share the share shown.
+  EXPECT_EQ(progressLine({1, 0.25}, 30.0, 0.0, false),
+            "rendering: pass 1,  50% done, 30.0 s, about 30.0 s left");
+  EXPECT_EQ(progressLine({1, 0.125}, 20.0, 0.0, false),
+            "rendering: pass 1,  25% done, 20.0 s, about 1 min 00 s left");
+  // Nothing done yet, or a pass complete: no estimate.
+  EXPECT_EQ(progressLine({1, 0.0}, 1.2, 0.0, true), "rendering: pass 1,   0% done, 1.2 s");
+  EXPECT_EQ(progressLine({1, 0.5}, 2.0, 0.0, true), "rendering: pass 1,  50% done, 2.0 s");
+  EXPECT_EQ(progressLine({2, 1.0}, 9.0, 2.0, true), "rendering: pass 2, 100% done, 9.0 s");
+  EXPECT_EQ(prism::durationText(59.94), "59.9 s");
+  EXPECT_EQ(prism::durationText(59.96), "1 min 00 s");
+  EXPECT_EQ(prism::durationText(125.4), "2 min 05 s");
+  EXPECT_EQ(prism::durationText(3725.0), "1 h 02 min");
+  EXPECT_EQ(prism::durationText(-1.0), "0.0 s");
 }
 
 TEST_F(Cli, TreeGeneratorReproducesTheCommittedTree) {

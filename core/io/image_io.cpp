@@ -19,13 +19,14 @@ namespace fs = std::filesystem;
 bool isTiff(const std::string& ext) { return ext == ".tif" || ext == ".tiff" || ext == ".tx"; }
 bool isPng(const std::string& ext) { return ext == ".png"; }
 
-void writeThroughModule(const fs::path& path, const fs::path& file, int width, int height,
+// The format follows `file`'s extension; errors name `target`.
+void writeThroughModule(const fs::path& target, const fs::path& file, int width, int height,
                         bool isFloat, const void* pixels, const std::string& description) {
   auto write = reinterpret_cast<PrismOiioWriteFn>(oiioModuleSymbol("prism_oiio_write"));
   char error[1024] = "";
-  if (!write(path.c_str(), file.c_str(), width, height, isFloat ? 1 : 0, pixels,
+  if (!write(file.c_str(), file.c_str(), width, height, isFloat ? 1 : 0, pixels,
              description.c_str(), error, sizeof error))
-    failWrite(path, error[0] ? error : "unknown error");
+    failWrite(target, error[0] ? error : "unknown error");
 }
 
 } // namespace
@@ -44,12 +45,16 @@ void checkWritableFile(const fs::path& path) {
   if (fs::is_directory(path, error)) fail("it is a directory");
 }
 
+bool hasImageFormat(const fs::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (isTiff(ext) || isPng(ext)) return true;
+  auto supports = reinterpret_cast<PrismOiioSupportsFn>(oiioModuleSymbol("prism_oiio_supports"));
+  return supports(path.c_str()) != 0;
+}
+
 void checkWritable(const fs::path& path) {
   checkWritableFile(path);
-  const std::string ext = lowerExtension(path);
-  if (isTiff(ext) || isPng(ext)) return;
-  auto supports = reinterpret_cast<PrismOiioSupportsFn>(oiioModuleSymbol("prism_oiio_supports"));
-  if (!supports(path.c_str()))
+  if (!hasImageFormat(path))
     failWrite(path, "no image format for the extension '" + path.extension().string() + "'");
 }
 
@@ -58,23 +63,34 @@ bool isFloatFormat(const fs::path& path) {
   return ext == ".exr" || ext == ".hdr";
 }
 
-void writeImage8(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgb,
-                 const std::string& description) {
-  const std::string ext = lowerExtension(path);
-  PendingFile file(path);
+void writeImage8Into(const fs::path& file, const fs::path& target, int width, int height,
+                     const std::vector<std::uint8_t>& rgb, const std::string& description,
+                     bool srgb) {
+  const std::string ext = lowerExtension(file);
   if (isTiff(ext))
-    writeTiff8(file.tempPath(), path, width, height, rgb.data(), description);
+    writeTiff8(file, target, width, height, rgb.data(), description);
   else if (isPng(ext))
-    writePng8(file.tempPath(), path, width, height, rgb.data(), description);
+    writePng8(file, target, width, height, rgb.data(), description, srgb);
   else
-    writeThroughModule(path, file.tempPath(), width, height, false, rgb.data(), description);
+    writeThroughModule(target, file, width, height, false, rgb.data(), description);
+}
+
+void writeImageFloatInto(const fs::path& file, const fs::path& target, int width, int height,
+                         const std::vector<Rgb>& radiance, const std::string& description) {
+  writeThroughModule(target, file, width, height, true, radiance.data(), description);
+}
+
+void writeImage8(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgb,
+                 const std::string& description, bool srgb) {
+  PendingFile file(path);
+  writeImage8Into(file.tempPath(), path, width, height, rgb, description, srgb);
   file.commit();
 }
 
 void writeImageFloat(const fs::path& path, int width, int height, const std::vector<Rgb>& radiance,
                      const std::string& description) {
   PendingFile file(path);
-  writeThroughModule(path, file.tempPath(), width, height, true, radiance.data(), description);
+  writeImageFloatInto(file.tempPath(), path, width, height, radiance, description);
   file.commit();
 }
 

@@ -8,6 +8,7 @@
 #include "core/render/renderer.h"
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 namespace prism {
@@ -19,6 +20,9 @@ struct PictureExposure {
   bool automatic = true;
   double avgmax = 0.0; // when not automatic
   double ev = 0.0;     // stops added (when not automatic)
+  // The 8-bit values sRGB-encoded after exposure (`prism render --srgb`,
+  // exposeChannelSrgb) rather than the model's linear values.
+  bool srgb = false;
 };
 
 // The metadata text for a picture of `result` exposed as `exposure`.
@@ -28,5 +32,13 @@ std::string exposureDescription(const RenderResult& result, const PictureExposur
 // Writes the picture (atomically). Throws std::runtime_error on failure.
 void writePicture(const std::filesystem::path& path, const RenderResult& result, bool floatRadiance,
                   const PictureExposure& exposure = {});
+
+// The same file's bytes, in the format named by `extension` (".png"), to
+// `out` (`prism render -o -`): written to a temporary file in the temporary
+// directory (the image libraries write files), copied, and removed. Throws
+// std::runtime_error, naming `shownAs`, on failure.
+void writePictureTo(std::ostream& out, const std::string& shownAs, const std::string& extension,
+                    const RenderResult& result, bool floatRadiance,
+                    const PictureExposure& exposure = {});
 
 } // namespace prism

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 // 8-bit RGB PNG as OpenImageIO 2.4 writes it: an oFFs chunk of (0, 0), the
 // Software and Description texts, libpng's default filters and compression.
 void writePng8(const fs::path& file, const fs::path& target, int width, int height,
-               const std::uint8_t* rgb, const std::string& description) {
+               const std::uint8_t* rgb, const std::string& description, bool srgb) {
   std::FILE* fp = std::fopen(file.c_str(), "wb");
   if (!fp) failWrite(target, "cannot open");
   std::string why;
@@ -50,6 +50,7 @@ void writePng8(const fs::path& file, const fs::path& target, int width, int heig
     png_set_compression_level(png, 6);
     png_set_compression_strategy(png, Z_DEFAULT_STRATEGY);
     png_set_oFFs(png, info, 0, 0, PNG_OFFSET_PIXEL);
+    if (srgb) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_set_text(png, info, texts, description.empty() ? 1 : 2);
     png_write_info(png, info);
     png_write_image(png, rows.data());

@@ -1,5 +1,7 @@
 #include "core/render/exposure.h"
 
+#include "core/texture/srgb.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,6 +30,24 @@ std::vector<std::uint8_t> exposeImage(const std::vector<Rgb>& radiance, float sc
     bytes.push_back(exposeChannel(c.r, scale));
     bytes.push_back(exposeChannel(c.g, scale));
     bytes.push_back(exposeChannel(c.b, scale));
+  }
+  return bytes;
+}
+
+std::uint8_t exposeChannelSrgb(float radiance, float scale) {
+  const float value = radiance * scale;
+  if (!(value > 0.0f)) return 0; // also catches NaN
+  if (value >= 255.0f) return 255;
+  return std::uint8_t(std::lround(255.0 * linearToSrgb(double(value) / 255.0)));
+}
+
+std::vector<std::uint8_t> exposeImageSrgb(const std::vector<Rgb>& radiance, float scale) {
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(radiance.size() * 3);
+  for (const Rgb& c : radiance) {
+    bytes.push_back(exposeChannelSrgb(c.r, scale));
+    bytes.push_back(exposeChannelSrgb(c.g, scale));
+    bytes.push_back(exposeChannelSrgb(c.b, scale));
   }
   return bytes;
 }

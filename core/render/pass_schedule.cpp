@@ -134,6 +134,18 @@ public:
         },
         stop_);
     if (!stopped()) executor_.shareMarks(marks_);
+    keepMarksInCrop();
+  }
+
+  // With a crop, pass 2 outside it is left out: its marks are cleared, on
+  // every process alike, after the decisions (which read the whole frame).
+  void keepMarksInCrop() {
+    const RenderSettings& c = s_.settings_;
+    if (c.cropX1 == 0) return;
+    for (int y = 0; y < film_.height; ++y)
+      for (int x = 0; x < film_.width; ++x)
+        if (x < c.cropX0 || x >= c.cropX1 || y < c.cropY0 || y >= c.cropY1)
+          marks_[film_.index(x, y)] = 0;
   }
 
   // Pass 2 in small blocks: a supersampled pixel costs 16 eye rays and their

@@ -28,6 +28,11 @@ struct RenderSettings {
   double bailout = 0.0;
   int threads = 0;   // 0: every hardware thread
   int tileSize = 32; // pixels per tile side: the unit of work
+  // Pass 2 only inside the pixels [cropX0, cropX1) x [cropY0, cropY1)
+  // (`prism render --crop`); pass 1, avgmax and pass 2's decisions stay the
+  // whole frame's, so the pixels inside are those of the uncropped render.
+  // cropX1 == 0: no crop.
+  int cropX0 = 0, cropY0 = 0, cropX1 = 0, cropY1 = 0;
 };
 
 struct RenderProgress {

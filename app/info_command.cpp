@@ -42,7 +42,8 @@ std::optional<Aabb> sceneBounds(const Scene& scene) {
   return box;
 }
 
-// Each kind the scene has, by its name in the scene language, with its count.
+// Each kind the scene has, by its name in messages and the ray tree (kName),
+// with its count.
 std::vector<std::pair<std::string, std::size_t>> kindCounts(const Scene& scene) {
   std::vector<std::pair<std::string, std::size_t>> counts;
   const auto add = [&]<class Kind>(const std::vector<Kind>& all) {

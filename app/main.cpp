@@ -1,6 +1,7 @@
 // prism: the command line. Parses arguments and hands them to a command.
 #include "bench_command.h"
 #include "convert_command.h"
+#include "info_command.h"
 #include "render_command.h"
 #include "sweep_command.h"
 #include "view_command.h"
@@ -75,6 +76,9 @@ int runPrism(int argc, char** argv) {
   SweepCommandOptions sweep;
   CLI::App* sweepCmd = addSweepCommand(app, sweep);
 
+  InfoCommandOptions info;
+  CLI::App* infoCmd = addInfoCommand(app, info);
+
   try {
     const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
     app.parse(int(args.size()), args.data());
@@ -128,6 +132,7 @@ int runPrism(int argc, char** argv) {
     if (viewCmd->parsed()) return runViewCommand(view);
     if (benchCmd->parsed()) return runBenchCommand(bench);
     if (convertCmd->parsed()) return runConvertCommand(convert);
+    if (infoCmd->parsed()) return runInfoCommand(info);
     if (sweepCmd->parsed()) {
       const int status = runSweepCommand(sweep, group.get());
       checkLeaksWhileThreadsAreIdle();

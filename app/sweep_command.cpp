@@ -176,7 +176,10 @@ int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
   });
   if (!agree(writable)) return kExitFailure;
   const Scene& scene = *loaded;
-  const auto [width, height] = sweepSize(o, scene);
+  // Named variables, not a structured binding: lambdas below capture them,
+  // which Clang before 16 does not allow of a binding.
+  const std::pair<int, int> sized = sweepSize(o, scene);
+  const int width = sized.first, height = sized.second;
   RenderSettings size;
   size.width = width;
   size.height = height;

@@ -99,7 +99,7 @@ std::vector<const char*> withDefaultCommand(const CLI::App& app, int argc, char*
   std::vector<const char*> args(argv, argv + argc);
   if (argc < 2 || argv[1][0] == '-') return args;
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    if (sub->get_name() == argv[1]) return args;
+    if (sub->check_name(argv[1])) return args; // a name or an alias (`check`)
   std::error_code error;
   if (std::filesystem::is_regular_file(argv[1], error)) args.insert(args.begin() + 1, "view");
   return args;

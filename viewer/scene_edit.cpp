@@ -32,6 +32,8 @@ bool same(const RenderSettings& a, const RenderSettings& b) {
 }
 
 template <class... F> struct Overloaded : F... { using F::operator()...; };
+// The C++17 guide: Clang before 17 does not deduce an aggregate's arguments (P1816).
+template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 // Where each texture is first used: the first primitive (in the order of the
 // kinds) whose material is one of its group's.

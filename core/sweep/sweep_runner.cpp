@@ -210,7 +210,8 @@ std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const Swe
 
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const auto groupStart = std::chrono::steady_clock::now();
-    // Not a structured binding: Clang 14 cannot capture one in a lambda.
+    // Named variables, not a structured binding: the lambda below captures
+    // `first`, which Clang before 16 does not allow of a binding.
     const std::size_t first = groups[g].first, last = groups[g].second;
     report(g, first);
     const std::vector<SweepRow> groupRows =

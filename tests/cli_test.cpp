@@ -25,23 +25,11 @@ using prism::test::ScratchDir;
 using prism::test::slurp;
 using prism::test::writeFile;
 
-class Cli : public ::testing::Test {
+class Cli : public prism::test::ProgramTest {
 protected:
-  RunResult prism(const std::string& args) {
-    return runCaptured(quoted(PRISM_BINARY) + " " + args, dir_);
-  }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    writeFile(dir_ / name, text);
-    return dir_ / name;
-  }
-
   std::string scene(const std::string& name) {
     return std::string(PRISM_SOURCE_DIR) + "/scenes/" + name;
   }
-
-  ScratchDir scratch_;
-  const fs::path dir_ = scratch_.path();
 };
 
 const char* kSmallScene = R"(eye 0 0 4

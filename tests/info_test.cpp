@@ -22,26 +22,14 @@ using prism::test::ScratchDir;
 using prism::test::slurp;
 using prism::test::writeFile;
 
-class Info : public ::testing::Test {
+class Info : public prism::test::ProgramTest {
 protected:
-  RunResult prism(const std::string& args) {
-    return runCaptured(quoted(PRISM_BINARY) + " " + args, dir_);
-  }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    writeFile(dir_ / name, text);
-    return dir_ / name;
-  }
-
   // `prism info --json FILE`, parsed; fails the test if it did not succeed.
   nlohmann::json infoJson(const fs::path& scene) {
     const RunResult r = prism("info --json " + quoted(scene));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return nlohmann::json::parse(r.out);
   }
-
-  ScratchDir scratch_;
-  const fs::path dir_ = scratch_.path();
 };
 
 // 3 spheres, 2 polygons, 1 light, 2 materials; every extreme of the bounds is

@@ -92,4 +92,21 @@ inline RunResult run(const fs::path& dir, const std::string& command) {
   return runCaptured("cd " + quoted(dir) + " && " + command, dir);
 }
 
+// A test of the `prism` program in a scratch folder of its own: run it with
+// arguments, write input files beside it.
+class ProgramTest : public ::testing::Test {
+protected:
+  RunResult prism(const std::string& args) {
+    return runCaptured(quoted(PRISM_BINARY) + " " + args, dir_);
+  }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    writeFile(dir_ / name, text);
+    return dir_ / name;
+  }
+
+  ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
+};
+
 } // namespace prism::test

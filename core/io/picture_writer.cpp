@@ -63,9 +63,7 @@ void writePictureInto(const std::filesystem::path& file, const std::filesystem::
   } else {
     const float scale = scaleOf(result, exposure);
     writeImage8Into(file, target, film.width, film.height,
-                    exposure.srgb ? exposeImageSrgb(film.radiance, scale)
-                                  : exposeImage(film.radiance, scale),
-                    description, exposure.srgb);
+                    exposeImage(film.radiance, scale, exposure.srgb), description, exposure.srgb);
   }
 }
 

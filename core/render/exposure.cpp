@@ -23,17 +23,6 @@ std::uint8_t exposeChannel(float radiance, float scale) {
   return std::uint8_t(std::round(value)); // std::round: halves away from zero
 }
 
-std::vector<std::uint8_t> exposeImage(const std::vector<Rgb>& radiance, float scale) {
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(radiance.size() * 3);
-  for (const Rgb& c : radiance) {
-    bytes.push_back(exposeChannel(c.r, scale));
-    bytes.push_back(exposeChannel(c.g, scale));
-    bytes.push_back(exposeChannel(c.b, scale));
-  }
-  return bytes;
-}
-
 std::uint8_t exposeChannelSrgb(float radiance, float scale) {
   const float value = radiance * scale;
   if (!(value > 0.0f)) return 0; // also catches NaN
@@ -41,15 +30,27 @@ std::uint8_t exposeChannelSrgb(float radiance, float scale) {
   return std::uint8_t(std::lround(255.0 * linearToSrgb(double(value) / 255.0)));
 }
 
-std::vector<std::uint8_t> exposeImageSrgb(const std::vector<Rgb>& radiance, float scale) {
+namespace {
+
+// Each channel through `channel`, a function the compiler can inline.
+template <class Channel>
+std::vector<std::uint8_t> exposeEach(const std::vector<Rgb>& radiance, float scale,
+                                     Channel channel) {
   std::vector<std::uint8_t> bytes;
   bytes.reserve(radiance.size() * 3);
   for (const Rgb& c : radiance) {
-    bytes.push_back(exposeChannelSrgb(c.r, scale));
-    bytes.push_back(exposeChannelSrgb(c.g, scale));
-    bytes.push_back(exposeChannelSrgb(c.b, scale));
+    bytes.push_back(channel(c.r, scale));
+    bytes.push_back(channel(c.g, scale));
+    bytes.push_back(channel(c.b, scale));
   }
   return bytes;
+}
+
+} // namespace
+
+std::vector<std::uint8_t> exposeImage(const std::vector<Rgb>& radiance, float scale, bool srgb) {
+  return srgb ? exposeEach(radiance, scale, exposeChannelSrgb)
+              : exposeEach(radiance, scale, exposeChannel);
 }
 
 } // namespace prism

@@ -16,14 +16,15 @@ float exposureScale(double avgmax);
 
 std::uint8_t exposeChannel(float radiance, float scale);
 
-// Interleaved 8-bit RGB of a whole radiance buffer.
-std::vector<std::uint8_t> exposeImage(const std::vector<Rgb>& radiance, float scale);
-
 // The same exposure, sRGB-encoded (`prism render --srgb`): the exposed value
 // as a fraction of 255, e = radiance * scale / 255 clamped to [0, 1], through
 // the sRGB transfer function (core/texture/srgb.h): round(255 * srgb(e)).
 // 0 for NaN or a value <= 0, as exposeChannel.
 std::uint8_t exposeChannelSrgb(float radiance, float scale);
-std::vector<std::uint8_t> exposeImageSrgb(const std::vector<Rgb>& radiance, float scale);
+
+// Interleaved 8-bit RGB of a whole radiance buffer: exposeChannel, or with
+// `srgb` exposeChannelSrgb, of each channel.
+std::vector<std::uint8_t> exposeImage(const std::vector<Rgb>& radiance, float scale,
+                                      bool srgb = false);
 
 } // namespace prism

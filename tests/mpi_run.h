@@ -37,12 +37,15 @@ inline std::filesystem::path mpirunOnPath() {
 // cores (this 2-core machine runs -np 3), and without single-copy transfers
 // between processes (containers often forbid the ptrace they need); a job
 // that hangs is ended after 2 minutes (status 124). Under AddressSanitizer
-// the processes unwind allocation stacks through Open MPI's frames (built
-// without frame pointers), so that the leak checker attributes what Open
-// MPI itself leaks to it and prism's suppressions apply. E.g.
+// the ranks look for memory errors but not for leaks: LeakSanitizer stops
+// the world to scan it, and with Open MPI's progress threads running its
+// tracer crashed at random (1 job in about 15 in CI); after MPI_Finalize
+// Open MPI has unloaded its components and their allocations cannot be told
+// from Prism's. Leaks of the code the ranks share with one process are
+// checked by the single-process tests (docs/testing.md). E.g.
 //   mpirunPrefix(2) + quoted(PRISM_BINARY) + " sweep ..."
 inline std::string mpirunPrefix(int processes) {
-  return "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}fast_unwind_on_malloc=0\" "
+  return "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" "
          "timeout 120 mpirun --allow-run-as-root --oversubscribe --mca "
          "btl_vader_single_copy_mechanism none -np " +
          std::to_string(processes) + " ";

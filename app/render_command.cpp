@@ -142,30 +142,11 @@ std::optional<std::string> applyCameraOptions(const RenderCommandOptions& o, Cam
   if (!o.lookat.empty()) c.lookat = point(o.lookat);
   if (o.fov) c.fov = *o.fov;
   if (!o.eye.empty() || !o.lookat.empty()) {
-    // The parser's camera checks (core/io/scene_parser.cpp), which are the
-    // computation of Camera's constructor, so that it cannot produce NaN.
+    // The parser's camera checks (core/io/scene_parser.cpp).
     const std::string given = !o.eye.empty() && !o.lookat.empty() ? "--eye and --lookat"
                               : !o.eye.empty()                    ? "--eye"
                                                                   : "--lookat";
-    const std::string view = "eye " + text(c.eye) + ", lookat " + text(c.lookat);
-    const Vec3 direction = c.lookat - c.eye;
-    if (direction == Vec3(0.0))
-      return given + ": eye and lookat are the same point (" + text(c.eye) +
-             "), so there is no view direction";
-    const Vec3 forward = glm::normalize(direction);
-    if (!isFinite(forward))
-      return given +
-             ": eye and lookat are too close together or too far apart to give a view "
-             "direction (" +
-             view + ")";
-    if (c.up == Vec3(0.0)) return given + ": the scene's up is the zero vector";
-    const Vec3 unitUp = glm::normalize(c.up / maxAbsComponent(c.up));
-    if (glm::length(glm::cross(forward, unitUp)) < 1e-9)
-      return given + ": the scene's up (" + text(c.up) +
-             ") is parallel to the view direction from eye to lookat (" + view + ")";
-    if (!isFinite(glm::normalize(glm::cross(forward, c.up))))
-      return given + ": the scene's up (" + text(c.up) +
-             ") is too short to give a direction with this view (" + view + ")";
+    if (std::optional<std::string> problem = viewProblem(c)) return given + ": " + *problem;
   }
   camera = c;
   return std::nullopt;

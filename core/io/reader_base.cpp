@@ -129,20 +129,6 @@ void ReaderBase::nonFiniteVertexNumber(Command& c, std::uint64_t found, std::uin
   invalid(c, token, name + " is not a finite number (" + quoted(token.text) + ")");
 }
 
-CameraProblem cameraProblem(const CameraSpec& camera) {
-  const Vec3 direction = camera.lookat - camera.eye;
-  if (direction == Vec3(0.0)) return CameraProblem::SamePoint;
-  const Vec3 forward = glm::normalize(direction);
-  if (!isFinite(forward)) return CameraProblem::NoDirection;
-  if (camera.up == Vec3(0.0)) return CameraProblem::ZeroUp;
-  // The sine of the angle between up and the view direction; 1e-9 catches what is
-  // parallel up to round-off. (Scaled before normalising so that it cannot underflow.)
-  const Vec3 unitUp = glm::normalize(camera.up / maxAbsComponent(camera.up));
-  if (glm::length(glm::cross(forward, unitUp)) < 1e-9) return CameraProblem::ParallelUp;
-  if (!isFinite(glm::normalize(glm::cross(forward, camera.up)))) return CameraProblem::ShortUp;
-  return CameraProblem::None;
-}
-
 std::string readSceneText(const std::filesystem::path& path, std::size_t maxBytes) {
   std::string text;
   if (const std::optional<std::string> problem = readFile(path, false, text, maxBytes)) {

@@ -168,19 +168,6 @@ private:
   const std::string* file_ = nullptr;
 };
 
-// Why no camera can be made from `camera`, checked in the order below: the
-// same computation as Camera's constructor, so that it cannot produce NaN.
-// Each reader words the problem in its own commands.
-enum class CameraProblem {
-  None,
-  SamePoint,   // eye and lookat are one point
-  NoDirection, // too close together or too far apart to normalise
-  ZeroUp,
-  ParallelUp, // up along the view direction, up to round-off
-  ShortUp,    // up too short to give a direction
-};
-CameraProblem cameraProblem(const CameraSpec& camera);
-
 // The whole text of a scene file `path` (at most maxBytes); a SceneError
 // "cannot read file: ..." at its first line when that fails.
 std::string readSceneText(const std::filesystem::path& path, std::size_t maxBytes = kMaxSceneBytes);

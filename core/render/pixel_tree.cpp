@@ -8,14 +8,20 @@
 
 namespace prism {
 
-std::string pixelRayTreeText(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                             int x, int y) {
+RayTreeNode pixelRayTree(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                         int x, int y, RayCounts& counts) {
   const Camera camera(scene.camera, settings.width, settings.height);
   Tracer tracer(scene, accel, settings.maxDepth);
-  RayCounts counts;
   RayTreeNode root;
   tracer.setEyeFootprint(camera.pixelSpread());
   tracer.trace(camera.eyeRay(x + 0.5, y + 0.5), 1, counts, &root);
+  return root;
+}
+
+std::string pixelRayTreeText(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                             int x, int y) {
+  RayCounts counts;
+  const RayTreeNode root = pixelRayTree(scene, accel, settings, x, y, counts);
   std::ostringstream out;
   out << "pixel (" << x << ", " << y << ") of " << settings.width << " x " << settings.height
       << ", max depth " << settings.maxDepth << ": centre ray\n";

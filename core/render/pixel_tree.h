@@ -3,11 +3,16 @@
 // the previewer's pixel inspector).
 #pragma once
 
+#include "core/render/ray_tree.h"
 #include "core/render/renderer.h"
 
 #include <string>
 
 namespace prism {
+
+// The centre ray of pixel (x, y) traced with its record; `counts` gets its rays.
+RayTreeNode pixelRayTree(const Scene& scene, const Accel& accel, const RenderSettings& settings,
+                         int x, int y, RayCounts& counts);
 
 std::string pixelRayTreeText(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                              int x, int y);

@@ -38,19 +38,23 @@ private:
 } // namespace
 
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                    const ProgressCallback& progress) {
+                    const ProgressCallback& progress, const StopCheck& stop) {
   ThreadPoolExecutor executor(resolveThreadCount(settings.threads));
-  return render(scene, accel, settings, executor, progress);
+  return render(scene, accel, settings, executor, progress, stop);
 }
 
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                    Executor& executor, const ProgressCallback& progress) {
+                    Executor& executor, const ProgressCallback& progress,
+                    const StopCheck& stop) {
   // Pass 1 in one go: a preview level would only change the order.
   const PassSchedule schedule(scene, accel, settings);
   RenderResult result;
   result.film = Film(settings.width, settings.height);
   ResultSink sink(result, schedule.tileCount(), progress);
-  schedule.run(result.film, executor, sink);
+  if (!schedule.run(result.film, executor, sink, stop)) {
+    result.cancelled = true;
+    return result;
+  }
   result.supersampledPixels =
       std::count(result.film.supersampled.begin(), result.film.supersampled.end(), std::uint8_t(1));
   return result;

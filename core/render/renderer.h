@@ -45,18 +45,24 @@ struct RenderResult {
   double avgmax = 0.0;
   RayCounts counts;
   long long supersampledPixels = 0;
+  // `stop` ended the render early: the film is incomplete and the rest of
+  // the result unset.
+  bool cancelled = false;
 };
 
 using ProgressCallback = std::function<void(const RenderProgress&)>;
 
-// `progress` is called from worker threads (one at a time) after each tile.
+// `progress` is called from worker threads (one at a time) after each tile;
+// `stop`, if given, between tiles: once it returns true the render ends
+// early, as soon as the tiles in flight are done.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                    const ProgressCallback& progress = {});
+                    const ProgressCallback& progress = {}, const StopCheck& stop = {});
 
 // The same on `executor` (settings.threads is then the executor's business):
 // for a distributed executor the result is whole on rank 0 only, and
 // `progress` hears this process's tiles.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                    Executor& executor, const ProgressCallback& progress = {});
+                    Executor& executor, const ProgressCallback& progress = {},
+                    const StopCheck& stop = {});
 
 } // namespace prism

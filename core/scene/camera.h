@@ -4,6 +4,9 @@
 
 #include "core/math/ray.h"
 
+#include <optional>
+#include <string>
+
 namespace prism {
 
 // The camera as the scene file states it.
@@ -17,6 +20,27 @@ struct CameraSpec {
 // A camera fixed to an image size. Screen coordinates run from (0, 0) at the
 // top-left corner of the image to (width, height) at the bottom-right, so the
 // centre of pixel (ix, iy) is (ix + 0.5, iy + 0.5).
+// Why no camera can be made from `camera`, checked in the order below: the
+// same computation as Camera's constructor, so that it cannot produce NaN.
+// Each reader words the problem in its own commands.
+enum class CameraProblem {
+  None,
+  SamePoint,   // eye and lookat are one point
+  NoDirection, // too close together or too far apart to normalise
+  ZeroUp,
+  ParallelUp, // up along the view direction, up to round-off
+  ShortUp,    // up too short to give a direction
+};
+CameraProblem cameraProblem(const CameraSpec& camera);
+
+// The same as a sentence that names the values ("eye and lookat are the
+// same point (0 0 5), so there is no view direction"), or nothing.
+std::optional<std::string> viewProblem(const CameraSpec& spec);
+
+// viewProblem, and before it a field of view outside (0, 180) degrees or an
+// eye or lookat outside the representable range (core/math/model_range.h).
+std::optional<std::string> cameraSpecProblem(const CameraSpec& spec);
+
 class Camera {
 public:
   // The spec must have eye != lookat and up not parallel to the view direction

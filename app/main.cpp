@@ -1,5 +1,6 @@
 // prism: the command line. Parses arguments and hands them to a command.
 #include "bench_command.h"
+#include "config_file.h"
 #include "convert_command.h"
 #include "info_command.h"
 #include "render_command.h"
@@ -60,6 +61,7 @@ int runPrism(int argc, char** argv) {
   CLI::App app{"Prism: a recursive ray tracer with adaptive antialiasing and automatic exposure"};
   app.set_version_flag("--version", "prism " PRISM_VERSION);
   app.require_subcommand(1);
+  addConfigOption(app);
 
   RenderCommandOptions render;
   CLI::App* renderCmd = addRenderCommand(app, render);
@@ -79,10 +81,19 @@ int runPrism(int argc, char** argv) {
   InfoCommandOptions info;
   CLI::App* infoCmd = addInfoCommand(app, info);
 
+  const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
+  if (const std::vector<std::string> problems = configFileProblems(app, args); !problems.empty()) {
+    for (const std::string& problem : problems)
+      std::cerr << problem << "\n";
+    return kExitUsage;
+  }
   try {
-    const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
     app.parse(int(args.size()), args.data());
   } catch (const CLI::ParseError& error) {
+    if (const std::optional<std::string> located = locateConfigError(args, error.what())) {
+      std::cerr << *located << "\n";
+      return kExitUsage;
+    }
     const int code = app.exit(error);
     return code == 0 ? kExitOk : kExitUsage;
   }

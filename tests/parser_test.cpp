@@ -1,6 +1,7 @@
 // The scene language (docs/scene-language.md): every command, the state it keeps (material,
 // transform, groups, includes) and every error with its exact position. Expected
 // values are worked out by hand in the comments.
+#include "core/io/scene_loader.h"
 #include "core/io/scene_parser.h"
 #include "core/shapes/shape_kinds.h"
 
@@ -591,6 +592,14 @@ TEST(ParserErrors, FormatAndWhat) {
   EXPECT_EQ(std::string(e.what()),
             "dir/a.sc:12:7: error: sphere: negative radius '-1'\nb.sc:1:1: error: x");
   EXPECT_EQ(e.diagnostics().size(), 2u);
+}
+
+// Warnings quote names from the input as errors do: a control byte in a file
+// name or message cannot reach the terminal.
+TEST(ParserErrors, WarningsAreFormattedPrintableLikeErrors) {
+  const Diagnostic d{"dir/\x1b[2Ja.obj", 3, 1, "unsupported statement 'curv\x07'"};
+  EXPECT_EQ(formatWarning(d),
+            "dir/\\x1b[2Ja.obj:3:1: warning: unsupported statement 'curv\\x07'");
 }
 
 TEST(ParserErrors, UnknownKeyword) {

@@ -6,9 +6,9 @@ namespace prism {
 
 // File names come from the command line and from `include` lines, and
 // messages quote the input: both are made printable (invalid UTF-8 escaped).
-std::string Diagnostic::format() const {
-  return printable(file) + ":" + std::to_string(line) + ":" + std::to_string(column) +
-         ": error: " + printable(message);
+std::string Diagnostic::format(const char* severity) const {
+  return printable(file) + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+         severity + ": " + printable(message);
 }
 
 namespace {

@@ -15,8 +15,8 @@ struct Diagnostic {
   int column = 0;   // 1-based, in bytes
   std::string message;
 
-  // "FILE:LINE:COLUMN: error: MESSAGE"
-  std::string format() const;
+  // "FILE:LINE:COLUMN: SEVERITY: MESSAGE", the file name and message made printable.
+  std::string format(const char* severity = "error") const;
 };
 
 class SceneError : public std::runtime_error {

@@ -23,8 +23,7 @@ Scene loadAnyScene(const std::filesystem::path& path, std::vector<Diagnostic>* w
 }
 
 std::string formatWarning(const Diagnostic& d) {
-  return d.file + ":" + std::to_string(d.line) + ":" + std::to_string(d.column) +
-         ": warning: " + d.message;
+  return d.format("warning");
 }
 
 } // namespace prism

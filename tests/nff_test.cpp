@@ -4,6 +4,7 @@
 #include "core/accel/accel.h"
 #include "core/io/nff_reader.h"
 #include "core/render/tracer.h"
+#include "core/scene/camera.h"
 #include "tests/test_expect.h"
 
 #include <gtest/gtest.h>
@@ -56,6 +57,23 @@ TEST(Nff, ViewBecomesTheCamera) {
   EXPECT_NEAR(s.camera.fov, glm::degrees(expected), 1e-12);
   expectCloseTo(s.background, {0.2, 0.3, 0.4});
   EXPECT_EQ(s.ambient, Color(0.0));
+}
+
+// An up vector too short to cross with the view direction (1e-300) is a
+// direction all the same: the camera's eye rays stay finite and the centre
+// ray meets the sphere in front of the eye at distance 4.
+TEST(Nff, ATinyUpIsADirectionAllTheSame) {
+  const Scene s = parseNff("v\nfrom 0 0 5\nat 0 0 0\nup 0 1e-300 0\nangle 45\nhither 1\n"
+                           "resolution 9 9\nl 0 5 5\nf 1 0 0 1 0 0 0 1\ns 0 0 0 1\n",
+                           "tiny-up.nff");
+  expectCloseTo(s.camera.up, {0, 1, 0});
+  const Camera camera(s.camera, s.width, s.height);
+  const Ray centre = camera.eyeRay(4.5, 4.5);
+  expectCloseTo(centre.dir, {0, 0, -1});
+  const auto accel = makeAccel(s, AccelKind::Bvh);
+  Hit hit;
+  ASSERT_TRUE(accel->closestHit(centre, Interval{}, nullptr, hit));
+  EXPECT_NEAR(hit.t, 4.0, 1e-12);
 }
 
 TEST(Nff, LightsDeliverTheirIntensityAtTheViewedPoint) {

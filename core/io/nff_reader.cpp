@@ -376,7 +376,12 @@ void NffReader::finish() {
   case CameraProblem::ParallelUp:
     error(at, "v: 'up' is parallel to the view direction (from 'from' to 'at')");
     return;
-  case CameraProblem::ShortUp: // never an error in NFF files: kept so
+  case CameraProblem::ShortUp:
+    // NFF says nothing of up's length, so a tiny one is not the file's
+    // mistake: scaled to a largest component of 1, the same direction gives
+    // the camera a finite right vector (otherwise every eye ray is NaN).
+    scene_.camera.up = camera.up / maxAbsComponent(camera.up);
+    break;
   case CameraProblem::None: break;
   }
   const Vec3 direction = camera.lookat - camera.eye;

@@ -228,6 +228,11 @@ private:
 
   // State.
   SourceFile& file() { return *files_.back(); }
+  // A path written in the current file (`include`, `image`): relative to
+  // that file's folder.
+  fs::path besideCurrentFile(std::string_view written) {
+    return (fs::path(file().name).parent_path() / fs::path(written)).lexically_normal();
+  }
   Origin origin(const Command& c) { return {file().index, std::uint32_t(c.keyword.line)}; }
   void compose(Command& c, const Transform& t);
   // The one way transform_ changes: textures follow it (SceneBuilder::setObjectSpace).
@@ -555,7 +560,7 @@ void Parser::image(Command& c) {
     }
     file().lexer.next();
   }
-  const fs::path path = (fs::path(file().name).parent_path() / fs::path(*raw)).lexically_normal();
+  const fs::path path = besideCurrentFile(*raw);
   const std::string name = path.string();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
@@ -1253,7 +1258,7 @@ const Parser::ResolvedInclude& Parser::resolveInclude(std::string_view raw) {
   auto it = includes_.find(key);
   if (it == includes_.end()) {
     ResolvedInclude r;
-    r.path = (fs::path(file().name).parent_path() / fs::path(raw)).lexically_normal();
+    r.path = besideCurrentFile(raw);
     r.name = r.path.string();
     r.identity = identityOf(r.path);
     it = includes_.emplace(std::move(key), std::move(r)).first;

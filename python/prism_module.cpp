@@ -131,6 +131,13 @@ Light editedLight(const PyScene& s, std::size_t index, const std::optional<Tripl
 
 void bindScene(py::module_& m) {
   py::class_<PyScene>(m, "Scene", "A scene read and ready to render (prism.load, prism.parse).")
+      .def("__repr__",
+           [](const PyScene& s) {
+             return "<prism.Scene '" + s.scene.name() + "' " + std::to_string(s.scene.width()) +
+                    " x " + std::to_string(s.scene.height()) +
+                    " primitives=" + std::to_string(s.scene.scene().primitiveCount()) +
+                    " lights=" + std::to_string(s.scene.lights().size()) + ">";
+           })
       .def_property_readonly("name", [](const PyScene& s) { return s.scene.name(); })
       .def_property_readonly("width", [](const PyScene& s) { return s.scene.width(); })
       .def_property_readonly("height", [](const PyScene& s) { return s.scene.height(); })

@@ -144,6 +144,17 @@ class RenderTest(unittest.TestCase):
         self.assertEqual(stats["primitives"], 1)
         self.assertEqual(stats["avgmax"], img.avgmax)
 
+    def test_supersampled_marks_the_pixels_of_pass_2(self):
+        scene = prism.parse(WALL)
+        self.assertFalse(prism.render(scene, antialias=False).supersampled.any())
+        # At thresh 0 every pixel differing at all from a neighbour is
+        # supersampled: on the wall each has a neighbour nearer to or farther
+        # from the centre, so all 25.
+        img = prism.render(scene, thresh=0.0)
+        self.assertEqual(img.supersampled.shape, (5, 5))
+        self.assertTrue(img.supersampled.all())
+        self.assertEqual(img.stats["supersampled_pixels"], 25)
+
     def test_threads_zero_means_every_core(self):
         img = prism.render(prism.parse(WALL), antialias=False, threads=0)
         self.assertEqual(img.stats["threads"], len(os.sched_getaffinity(0)))
@@ -345,6 +356,7 @@ class SceneTest(unittest.TestCase):
                                         "up": (0.0, 1.0, 0.0), "fov": 45.0})
         self.assertEqual(scene.lights, [((0.0, 0.0, 5.0), (4.0, 4.0, 4.0))])
         self.assertEqual(scene.warnings, [])
+        self.assertEqual(repr(scene), "<prism.Scene '<string>' 5 x 5 primitives=1 lights=1>")
 
     def test_edited_lights_and_camera_change_the_next_render(self):
         scene = prism.parse(WALL)

@@ -144,7 +144,8 @@ void bindScene(py::module_& m) {
       .def_property_readonly("warnings", [](const PyScene& s) { return s.scene.warnings(); })
       .def_property_readonly("primitives",
                              [](const PyScene& s) { return s.scene.scene().primitiveCount(); })
-      .def_property_readonly("camera", [](const PyScene& s) { return cameraDict(s.scene.camera()); })
+      .def_property_readonly("camera",
+                             [](const PyScene& s) { return cameraDict(s.scene.camera()); })
       .def(
           "set_camera",
           [](PyScene& s, const std::optional<Triple>& eye, const std::optional<Triple>& lookat,
@@ -213,22 +214,24 @@ py::tuple rayTree(PyScene& s, int x, int y, int width, int height, int depth, do
   return py::make_tuple(rayTreeDict(root, s.scene.scene()), text);
 }
 
-py::array_t<std::uint8_t> exposePicture(const py::array_t<float, py::array::c_style | py::array::forcecast>& radiance,
-                                 double avgmax, bool srgb) {
+py::array_t<std::uint8_t>
+exposePicture(const py::array_t<float, py::array::c_style | py::array::forcecast>& radiance,
+              double avgmax, bool srgb) {
   const api::Image image = imageFrom(radiance, avgmax);
   std::vector<std::uint8_t> bytes;
   {
     const py::gil_scoped_release release;
     bytes = api::expose(image, srgb); // by image.avgmax
   }
-  py::array_t<std::uint8_t> out({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
+  py::array_t<std::uint8_t> out(
+      {py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
   std::memcpy(out.mutable_data(), bytes.data(), bytes.size());
   return out;
 }
 
 void writePicture(const std::filesystem::path& path,
-           const py::array_t<float, py::array::c_style | py::array::forcecast>& radiance,
-           double avgmax, bool srgb, bool floatRadiance) {
+                  const py::array_t<float, py::array::c_style | py::array::forcecast>& radiance,
+                  double avgmax, bool srgb, bool floatRadiance) {
   const api::Image image = imageFrom(radiance, avgmax);
   api::WriteOptions options;
   options.srgb = srgb;
@@ -274,7 +277,8 @@ PYBIND11_MODULE(_prism, m) {
         py::arg("bailout"), py::arg("threads"), py::arg("progress"));
   m.def("ray_tree", &rayTree, py::arg("scene"), py::arg("x"), py::arg("y"), py::kw_only(),
         py::arg("width"), py::arg("height"), py::arg("depth"), py::arg("bailout"));
-  m.def("expose", &exposePicture, py::arg("radiance"), py::kw_only(), py::arg("avgmax"), py::arg("srgb"));
-  m.def("write", &writePicture, py::arg("path"), py::arg("radiance"), py::kw_only(), py::arg("avgmax"),
-        py::arg("srgb"), py::arg("float_radiance"));
+  m.def("expose", &exposePicture, py::arg("radiance"), py::kw_only(), py::arg("avgmax"),
+        py::arg("srgb"));
+  m.def("write", &writePicture, py::arg("path"), py::arg("radiance"), py::kw_only(),
+        py::arg("avgmax"), py::arg("srgb"), py::arg("float_radiance"));
 }

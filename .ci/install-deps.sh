@@ -13,6 +13,10 @@ packages=(
   nlohmann-json3-dev                # statistics as JSON
   libtinyobjloader-dev              # OBJ/MTL import
   libgtest-dev                      # tests
+  # the Python module (python/, docs/python.md): pybind11, the headers of
+  # Debian's python3, numpy for its pictures; pytest for running its tests
+  # by hand (ctest runs them with unittest)
+  pybind11-dev python3-dev python3-numpy python3-pytest
   openmpi-bin libopenmpi-dev        # distributed rendering (libprism_mpi.so; mpirun for its tests)
   # the previewer: windows, OpenGL (GLVND) and Mesa's software rasteriser, Dear ImGui
   libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev

@@ -14,7 +14,9 @@ struct SharedModule {
 };
 
 // Loads `fileName` from beside the executable (the build tree: build/prism;
-// build/tests/* one folder down) or the install tree (bin/../lib/prism).
+// build/tests/* one folder down) or the install tree (bin/../lib/prism); in
+// a process that is not Prism's program (Python with the extension of
+// python/), also from beside the shared object holding the core.
 SharedModule loadSharedModule(const char* fileName);
 
 } // namespace prism

@@ -1,5 +1,6 @@
 // prism: the command line. Parses arguments and hands them to a command.
 #include "bench_command.h"
+#include "completion.h"
 #include "convert_command.h"
 #include "info_command.h"
 #include "render_command.h"
@@ -78,6 +79,9 @@ int runPrism(int argc, char** argv) {
 
   InfoCommandOptions info;
   CLI::App* infoCmd = addInfoCommand(app, info);
+
+  // Hidden: the build writes the installed bash completion with it.
+  addBashCompletionFlag(app, "prism", /*fileAtTop=*/true); // prism SCENE
 
   try {
     const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE

@@ -13,6 +13,8 @@ packages=(
   nlohmann-json3-dev                # statistics as JSON
   libtinyobjloader-dev              # OBJ/MTL import
   libgtest-dev                      # tests
+  help2man                          # the manual page, written at build time from --help (packaging/)
+  dpkg-dev                          # cpack's .deb: dpkg-shlibdeps finds its Depends (tests/package_test.cpp)
   openmpi-bin libopenmpi-dev        # distributed rendering (libprism_mpi.so; mpirun for its tests)
   # the previewer: windows, OpenGL (GLVND) and Mesa's software rasteriser, Dear ImGui
   libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev

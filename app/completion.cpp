@@ -50,8 +50,10 @@ std::vector<std::string> choicesIn(const std::string& typeName) {
   std::stringstream list(typeName.substr(open + 1, close - open - 1));
   for (std::string item; std::getline(list, item, ',');) {
     item = item.substr(0, item.find("->"));
-    while (!item.empty() && item.front() == ' ') item.erase(item.begin());
-    while (!item.empty() && item.back() == ' ') item.pop_back();
+    while (!item.empty() && item.front() == ' ')
+      item.erase(item.begin());
+    while (!item.empty() && item.back() == ' ')
+      item.pop_back();
     if (plainWord(item)) out.push_back(item);
   }
   return out;
@@ -59,11 +61,14 @@ std::vector<std::string> choicesIn(const std::string& typeName) {
 
 OptionShape shapeOf(const CLI::Option& option) {
   OptionShape s;
-  for (const std::string& n : option.get_snames()) s.names.push_back("-" + n);
-  for (const std::string& n : option.get_lnames()) s.names.push_back("--" + n);
+  for (const std::string& n : option.get_snames())
+    s.names.push_back("-" + n);
+  for (const std::string& n : option.get_lnames())
+    s.names.push_back("--" + n);
   // A flag takes nothing; an option with a fixed count (--size W H) that
   // many words; a list of any length (or an optional value) one.
-  s.values = option.get_items_expected_max() == 0 ? 0 : std::max(1, option.get_items_expected_min());
+  s.values =
+      option.get_items_expected_max() == 0 ? 0 : std::max(1, option.get_items_expected_min());
   const std::string type = option.get_type_name();
   s.choices = choicesIn(type);
   if (!s.choices.empty())
@@ -78,7 +83,8 @@ void collect(const CLI::App& app, const std::string& key, std::vector<CommandSha
   CommandShape c;
   c.key = key;
   c.names.push_back(app.get_name());
-  for (const std::string& alias : app.get_aliases()) c.names.push_back(alias);
+  for (const std::string& alias : app.get_aliases())
+    c.names.push_back(alias);
   for (const CLI::Option* option : app.get_options()) {
     if (hidden(option->get_group())) continue;
     if (option->nonpositional())
@@ -86,9 +92,8 @@ void collect(const CLI::App& app, const std::string& key, std::vector<CommandSha
     else
       c.positionals = true;
   }
-  c.subcommands = app.get_subcommands([](const CLI::App* sub) {
-    return !sub->get_name().empty() && !hidden(sub->get_group());
-  });
+  c.subcommands = app.get_subcommands(
+      [](const CLI::App* sub) { return !sub->get_name().empty() && !hidden(sub->get_group()); });
   out.push_back(c);
   for (const CLI::App* sub : c.subcommands)
     collect(*sub, key.empty() ? sub->get_name() : key + "." + sub->get_name(), out);
@@ -96,21 +101,22 @@ void collect(const CLI::App& app, const std::string& key, std::vector<CommandSha
 
 std::string joined(const std::vector<std::string>& words, const std::string& between) {
   std::string s;
-  for (const std::string& w : words) s += (s.empty() ? "" : between) + w;
+  for (const std::string& w : words)
+    s += (s.empty() ? "" : between) + w;
   return s;
 }
 
 // Case patterns `KEY:WORD|KEY:WORD2` for one command's key and several words.
 std::string patterns(const std::string& key, const std::vector<std::string>& words) {
   std::vector<std::string> p;
-  for (const std::string& w : words) p.push_back(key + ":" + w);
+  for (const std::string& w : words)
+    p.push_back(key + ":" + w);
   return joined(p, "|");
 }
 
 } // namespace
 
-std::string bashCompletionScript(const CLI::App& app, const std::string& program,
-                                 bool fileAtTop) {
+std::string bashCompletionScript(const CLI::App& app, const std::string& program, bool fileAtTop) {
   std::vector<CommandShape> commands;
   collect(app, "", commands);
   std::string function = "_";
@@ -138,7 +144,8 @@ std::string bashCompletionScript(const CLI::App& app, const std::string& program
   for (const CommandShape& c : commands) {
     for (const CLI::App* sub : c.subcommands) {
       std::vector<std::string> names{sub->get_name()};
-      for (const std::string& alias : sub->get_aliases()) names.push_back(alias);
+      for (const std::string& alias : sub->get_aliases())
+        names.push_back(alias);
       const std::string key = c.key.empty() ? sub->get_name() : c.key + "." + sub->get_name();
       s << "      " << patterns(c.key, names) << ") cmd=" << key << " ;;\n";
     }
@@ -173,7 +180,8 @@ std::string bashCompletionScript(const CLI::App& app, const std::string& program
     std::vector<std::string> subs;
     for (const CLI::App* sub : c.subcommands) {
       subs.push_back(sub->get_name());
-      for (const std::string& alias : sub->get_aliases()) subs.push_back(alias);
+      for (const std::string& alias : sub->get_aliases())
+        subs.push_back(alias);
     }
     const bool files = c.positionals || (c.key.empty() && fileAtTop);
     s << "    " << (c.key.empty() ? "''" : c.key) << ")\n"

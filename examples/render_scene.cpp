@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
     const prism::RenderResult result = prism::render(scene, *accel, settings);
     prism::writePicture(argv[2], result, /*floatRadiance=*/false);
   } catch (const prism::SceneError& error) {
-    for (const prism::Diagnostic& d : error.diagnostics()) std::cerr << d.format() << "\n";
+    for (const prism::Diagnostic& d : error.diagnostics())
+      std::cerr << d.format() << "\n";
     return 1;
   } catch (const std::exception& error) {
     std::cerr << "prism_example: " << error.what() << "\n";

@@ -31,7 +31,8 @@ std::string shown(const RunResult& r) {
 // `text` as one shell word, whatever quotes it holds.
 std::string shellWord(const std::string& text) {
   std::string word = "'";
-  for (const char c : text) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  for (const char c : text)
+    word += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return word + "'";
 }
 
@@ -53,7 +54,8 @@ std::vector<std::string> commandsIn(const std::string& help) {
   if (start == std::string::npos) return commands;
   std::istringstream lines(help.substr(start + 13));
   for (std::string line; std::getline(lines, line);)
-    if (line.size() > 2 && line.rfind("  ", 0) == 0 && std::islower(static_cast<unsigned char>(line[2])))
+    if (line.size() > 2 && line.rfind("  ", 0) == 0 &&
+        std::islower(static_cast<unsigned char>(line[2])))
       commands.push_back(line.substr(2, line.find_first_of(", ", 2) - 2));
   return commands;
 }
@@ -185,10 +187,11 @@ TEST(Package, DebInstallsAWorkingPrism) {
   ASSERT_TRUE(fs::is_regular_file(completion));
   fs::create_directories(dir / "empty");
   auto complete = [&](const std::string& words, int cword) {
-    return run(dir / "empty", "bash -c " + shellWord("source " + shellWord(completion.string()) +
-                                                     " && COMP_WORDS=(" + words +
-                                                     ") && COMP_CWORD=" + std::to_string(cword) +
-                                                     " && _prism && printf '%s\\n' \"${COMPREPLY[@]}\""));
+    return run(dir / "empty",
+               "bash -c " +
+                   shellWord("source " + shellWord(completion.string()) + " && COMP_WORDS=(" +
+                             words + ") && COMP_CWORD=" + std::to_string(cword) +
+                             " && _prism && printf '%s\\n' \"${COMPREPLY[@]}\""));
   };
   const RunResult ren = complete("prism ren", 1);
   EXPECT_EQ(ren.out, "render\n") << shown(ren);
@@ -200,8 +203,9 @@ TEST(Package, DebInstallsAWorkingPrism) {
     EXPECT_NE(top.out.find(command + "\n"), std::string::npos) << command << "\n" << shown(top);
   const RunResult accel = complete("prism render scene.sc --accel ''", 4);
   EXPECT_EQ(accel.out, "bvh\ngroups\nnone\n") << shown(accel);
-  const RunResult bound = run(
-      dir, "bash -c " + shellWord("source " + shellWord(completion.string()) + " && complete -p prism"));
+  const RunResult bound =
+      run(dir, "bash -c " +
+                   shellWord("source " + shellWord(completion.string()) + " && complete -p prism"));
   EXPECT_EQ(bound.out, "complete -F _prism prism\n") << shown(bound);
 
   // Under the sanitizers the installed library is instrumented, and a
@@ -218,9 +222,10 @@ TEST(Package, DebInstallsAWorkingPrism) {
         replaceLines(slurp(scenes / "glass.sc"), "resolution ", "resolution 64 48");
     ASSERT_EQ(resolutions, 1);
     writeFile(scenes / "small-glass.sc", small);
-    const std::string sanitize = flags.empty() ? ""
-                                               : " -DCMAKE_CXX_FLAGS=" + shellWord(flags) +
-                                                     " -DCMAKE_EXE_LINKER_FLAGS=" + shellWord(flags);
+    const std::string sanitize = flags.empty()
+                                     ? ""
+                                     : " -DCMAKE_CXX_FLAGS=" + shellWord(flags) +
+                                           " -DCMAKE_EXE_LINKER_FLAGS=" + shellWord(flags);
     const RunResult configure =
         run(dir, "cmake -S " + quoted(examples) + " -B " + quoted(dir / "example") +
                      " -DCMAKE_PREFIX_PATH=" + quoted(usr) +
@@ -228,9 +233,9 @@ TEST(Package, DebInstallsAWorkingPrism) {
     ASSERT_EQ(configure.exitCode, 0) << shown(configure);
     const RunResult build = run(dir, "cmake --build " + quoted(dir / "example"));
     ASSERT_EQ(build.exitCode, 0) << shown(build);
-    const RunResult example = run(dir, quoted(dir / "example/prism_example") + " " +
-                                           quoted(scenes / "small-glass.sc") + " " +
-                                           quoted(dir / "example.tif"));
+    const RunResult example =
+        run(dir, quoted(dir / "example/prism_example") + " " + quoted(scenes / "small-glass.sc") +
+                     " " + quoted(dir / "example.tif"));
     EXPECT_EQ(example.exitCode, 0) << shown(example);
     EXPECT_EQ(tiffSize(dir / "example.tif"), std::make_pair(64, 48));
   }
@@ -262,9 +267,9 @@ TEST(Package, DebInstallsAWorkingPrism) {
                      " " + pc.out.substr(0, pc.out.find_last_not_of(" \n") + 1) + " " +
                      pcStatic.out.substr(0, pcStatic.out.find_last_not_of(" \n") + 1));
     ASSERT_EQ(build.exitCode, 0) << shown(build);
-    const RunResult example = run(dir, quoted(dir / "pc_example") + " " +
-                                           quoted(scenes / "small-glass.sc") + " " +
-                                           quoted(dir / "pc_example.tif"));
+    const RunResult example =
+        run(dir, quoted(dir / "pc_example") + " " + quoted(scenes / "small-glass.sc") + " " +
+                     quoted(dir / "pc_example.tif"));
     EXPECT_EQ(example.exitCode, 0) << shown(example);
     EXPECT_EQ(tiffSize(dir / "pc_example.tif"), std::make_pair(64, 48));
   }

@@ -29,8 +29,7 @@ namespace {
 // shared library) that links it carries it. Empty for the program.
 fs::path objectWithTheCore(const fs::path& exe) {
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&loadSharedModule), &info) == 0 || !info.dli_fname)
-    return {};
+  if (dladdr(reinterpret_cast<void*>(&loadSharedModule), &info) == 0 || !info.dli_fname) return {};
   const fs::path object = info.dli_fname;
   std::error_code ec;
   if (!object.is_absolute() || fs::equivalent(object, exe, ec)) return {};
@@ -64,8 +63,8 @@ SharedModule loadSharedModule(const char* fileName) {
   // filesystem root is not tried: that would be the system's install, which
   // an object outside it (a build tree) must not pick up.
   if (const fs::path object = objectWithTheCore(exe); !object.empty())
-    for (fs::path prefix = object.parent_path();
-         prefix.has_relative_path(); prefix = prefix.parent_path())
+    for (fs::path prefix = object.parent_path(); prefix.has_relative_path();
+         prefix = prefix.parent_path())
       candidates.push_back(prefix / PRISM_MODULES_IN_PREFIX / fileName);
   std::string tried;
   for (const fs::path& p : candidates) {

@@ -17,6 +17,8 @@ packages=(
   # Debian's python3, numpy for its pictures; pytest for running its tests
   # by hand (ctest runs them with unittest)
   pybind11-dev python3-dev python3-numpy python3-pytest
+  help2man                          # the manual page, written at build time from --help (packaging/)
+  dpkg-dev                          # cpack's .deb: dpkg-shlibdeps finds its Depends (tests/package_test.cpp)
   openmpi-bin libopenmpi-dev        # distributed rendering (libprism_mpi.so; mpirun for its tests)
   # the previewer: windows, OpenGL (GLVND) and Mesa's software rasteriser, Dear ImGui
   libglfw3-dev libopengl-dev libgl-dev libgl1-mesa-dri libimgui-dev

@@ -1,5 +1,6 @@
 // prism: the command line. Parses arguments and hands them to a command.
 #include "bench_command.h"
+#include "completion.h"
 #include "config_file.h"
 #include "convert_command.h"
 #include "info_command.h"
@@ -80,6 +81,9 @@ int runPrism(int argc, char** argv) {
 
   InfoCommandOptions info;
   CLI::App* infoCmd = addInfoCommand(app, info);
+
+  // Hidden: the build writes the installed bash completion with it.
+  addBashCompletionFlag(app, "prism", /*fileAtTop=*/true); // prism SCENE
 
   const std::vector<const char*> args = withDefaultCommand(app, argc, argv); // prism SCENE
   if (const std::vector<std::string> problems = configFileProblems(app, args); !problems.empty()) {

@@ -5,23 +5,35 @@
 #include <filesystem>
 #include <vector>
 
+// Where the install puts the modules, as core/CMakeLists.txt computes it from
+// the install layout (GNUInstallDirs): relative to the programs' folder
+// (bin -> ../lib/x86_64-linux-gnu/prism with prefix /usr on Debian) and to
+// the install prefix (lib/x86_64-linux-gnu/prism). Relative, so that an
+// install moved elsewhere (`dpkg -x` into a scratch root, `cmake --install
+// --prefix`) still finds its own modules.
+#ifndef PRISM_MODULES_FROM_BINDIR
+#error "PRISM_MODULES_FROM_BINDIR is set by core/CMakeLists.txt"
+#endif
+#ifndef PRISM_MODULES_IN_PREFIX
+#error "PRISM_MODULES_IN_PREFIX is set by core/CMakeLists.txt"
+#endif
+
 namespace prism {
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// The folder of the shared object this code was linked into when it is not
-// the program: the Python extension (python/), which carries its own copy of
-// the modules beside it. Empty for the program itself.
-fs::path libraryFolder(const fs::path& exe) {
+// The shared object this code was linked into, when it is not the program
+// itself: the core is a static library, so a Python extension module (or any
+// shared library) that links it carries it. Empty for the program.
+fs::path objectWithTheCore(const fs::path& exe) {
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&loadSharedModule), &info) == 0 || info.dli_fname == nullptr)
-    return {};
+  if (dladdr(reinterpret_cast<void*>(&loadSharedModule), &info) == 0 || !info.dli_fname) return {};
+  const fs::path object = info.dli_fname;
   std::error_code ec;
-  const fs::path self = fs::canonical(info.dli_fname, ec);
-  if (ec || self == exe) return {};
-  return self.parent_path();
+  if (!object.is_absolute() || fs::equivalent(object, exe, ec)) return {};
+  return object;
 }
 
 } // namespace
@@ -36,12 +48,28 @@ SharedModule loadSharedModule(const char* fileName) {
   }
   const fs::path dir = exe.parent_path();
   std::vector<fs::path> candidates = {
-      dir / fileName,                                 // build tree: build/prism
-      dir.parent_path() / fileName,                   // build tree: build/tests/*, build/bench/*
-      dir.parent_path() / "lib" / "prism" / fileName, // install tree: bin/../lib/prism
+      // The build tree: build/prism and the modules beside it.
+      dir / fileName,
+      // The build tree: build/tests/*, build/bench/*, one folder down.
+      dir.parent_path() / fileName,
+      // The install tree: an installed program (prism, or another in the
+      // same bin folder) and the modules in LIBDIR/prism.
+      (dir / PRISM_MODULES_FROM_BINDIR / fileName).lexically_normal(),
   };
-  if (const fs::path library = libraryFolder(exe); !library.empty())
-    candidates.push_back(library / fileName); // beside the Python extension
+  // A shared object that links the core (a Python extension module) is
+  // loaded by a program from anywhere (/usr/bin/python3, a virtualenv), so
+  // the program's folder says nothing: the object lies somewhere under its
+  // own install prefix instead, which is one of the folders above it. The
+  // filesystem root is not tried: that would be the system's install, which
+  // an object outside it (a build tree) must not pick up.
+  if (const fs::path object = objectWithTheCore(exe); !object.empty()) {
+    // The build tree's Python package carries its own copy beside the
+    // extension (python/CMakeLists.txt).
+    candidates.push_back(object.parent_path() / fileName);
+    for (fs::path prefix = object.parent_path(); prefix.has_relative_path();
+         prefix = prefix.parent_path())
+      candidates.push_back(prefix / PRISM_MODULES_IN_PREFIX / fileName);
+  }
   std::string tried;
   for (const fs::path& p : candidates) {
     if (!fs::exists(p, ec)) {

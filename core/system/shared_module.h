@@ -14,9 +14,10 @@ struct SharedModule {
 };
 
 // Loads `fileName` from beside the executable (the build tree: build/prism;
-// build/tests/* one folder down) or the install tree (bin/../lib/prism); in
-// a process that is not Prism's program (Python with the extension of
-// python/), also from beside the shared object holding the core.
+// build/tests/* one folder down), or from the install tree's LIBDIR/prism
+// found from the executable's folder or, for a shared object that links the
+// core (a Python extension module), from the folders above that object
+// (shared_module.cpp says why each place is tried).
 SharedModule loadSharedModule(const char* fileName);
 
 } // namespace prism

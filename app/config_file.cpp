@@ -118,10 +118,10 @@ std::optional<std::string> locateConfigError(const std::vector<const char*>& arg
       onCommandLine = onCommandLine || std::string(arg) == option ||
                       std::string(arg).rfind(option + "=", 0) == 0;
     const std::size_t at = message.find(option);
-    const bool named = at != std::string::npos &&
-                       (at + option.size() == message.size() ||
-                        !(std::isalnum((unsigned char)message[at + option.size()]) ||
-                          message[at + option.size()] == '-'));
+    const bool named =
+        at != std::string::npos && (at + option.size() == message.size() ||
+                                    !(std::isalnum((unsigned char)message[at + option.size()]) ||
+                                      message[at + option.size()] == '-'));
     if (named && !onCommandLine) return place(*file, s) + message;
   }
   return std::nullopt;

@@ -73,12 +73,12 @@ TEST_F(Cli, UsageErrorsExitWith2) {
 // --config: a [render] section of settings, which the command line overrides.
 TEST_F(Cli, ASettingsFileGivesTheRendersSettingsAndTheCommandLineWins) {
   const std::string small = quoted(write("small.sc", kSmallScene));
-  const std::string toml = quoted(write("render.toml", "# kept with the picture\n[render]\ndepth = 2\nsize = [24, 16]\n"
-                       "no-aa = true\nthresh = 0.25\n"));
+  const std::string toml =
+      quoted(write("render.toml", "# kept with the picture\n[render]\ndepth = 2\nsize = [24, 16]\n"
+                                  "no-aa = true\nthresh = 0.25\n"));
   auto in = [&](const std::string& name) { return quoted(dir_ / name); };
-  const RunResult fromFile =
-      prism("render " + small + " -o " + in("a.tif") + " --config " + toml + " --stats-json " +
-            in("a.json") + " -q");
+  const RunResult fromFile = prism("render " + small + " -o " + in("a.tif") + " --config " + toml +
+                                   " --stats-json " + in("a.json") + " -q");
   ASSERT_EQ(fromFile.exitCode, 0) << fromFile.err;
   const auto stats = nlohmann::json::parse(slurp(dir_ / "a.json"));
   EXPECT_EQ(stats["width"], 24);
@@ -87,9 +87,8 @@ TEST_F(Cli, ASettingsFileGivesTheRendersSettingsAndTheCommandLineWins) {
   EXPECT_EQ(stats["no_aa"], true);
   EXPECT_DOUBLE_EQ(stats["thresh"].get<double>(), 0.25);
 
-  const RunResult overridden =
-      prism("render " + small + " -o " + in("b.tif") + " --config " + toml +
-                                       " --depth 4 --stats-json " + in("b.json") + " -q");
+  const RunResult overridden = prism("render " + small + " -o " + in("b.tif") + " --config " +
+                                     toml + " --depth 4 --stats-json " + in("b.json") + " -q");
   ASSERT_EQ(overridden.exitCode, 0) << overridden.err;
   const auto stats2 = nlohmann::json::parse(slurp(dir_ / "b.json"));
   EXPECT_EQ(stats2["max_depth"], 4);
@@ -102,19 +101,24 @@ TEST_F(Cli, MistakesInASettingsFileAreLocatedAndNothingIsWritten) {
   write("bad.toml", "depth = 2\n[render]\n  bogus = 1\n[paint]\nx = 1\n");
   const RunResult bad = prism(run + quoted(dir_ / "bad.toml"));
   EXPECT_EQ(bad.exitCode, 2);
-  EXPECT_NE(bad.err.find((dir_ / "bad.toml").string() + ":1:1: error: `depth` is outside a section"), std::string::npos)
+  EXPECT_NE(
+      bad.err.find((dir_ / "bad.toml").string() + ":1:1: error: `depth` is outside a section"),
+      std::string::npos)
       << bad.err;
-  EXPECT_NE(bad.err.find((dir_ / "bad.toml").string() + ":3:3: error: prism render has no option --bogus"),
+  EXPECT_NE(bad.err.find((dir_ / "bad.toml").string() +
+                         ":3:3: error: prism render has no option --bogus"),
             std::string::npos)
       << bad.err;
-  EXPECT_NE(bad.err.find((dir_ / "bad.toml").string() + ":5:1: error: [paint] is not a command of prism"),
-            std::string::npos)
+  EXPECT_NE(
+      bad.err.find((dir_ / "bad.toml").string() + ":5:1: error: [paint] is not a command of prism"),
+      std::string::npos)
       << bad.err;
 
   write("value.toml", "[render]\nsize = [24, 16]\nthresh = 2\n");
   const RunResult value = prism(run + quoted(dir_ / "value.toml"));
   EXPECT_EQ(value.exitCode, 2);
-  EXPECT_EQ(value.err.rfind((dir_ / "value.toml").string() + ":3:1: error: --thresh", 0), 0u) << value.err;
+  EXPECT_EQ(value.err.rfind((dir_ / "value.toml").string() + ":3:1: error: --thresh", 0), 0u)
+      << value.err;
   // The same value on the command line is the command line's mistake.
   const RunResult line = prism(run + quoted(dir_ / "value.toml") + " --thresh 3");
   EXPECT_EQ(line.exitCode, 2);
@@ -122,7 +126,9 @@ TEST_F(Cli, MistakesInASettingsFileAreLocatedAndNothingIsWritten) {
 
   const RunResult missing = prism(run + quoted(dir_ / "none.toml"));
   EXPECT_EQ(missing.exitCode, 2);
-  EXPECT_NE(missing.err.find((dir_ / "none.toml").string() + ": error: cannot read the settings file"), std::string::npos)
+  EXPECT_NE(
+      missing.err.find((dir_ / "none.toml").string() + ": error: cannot read the settings file"),
+      std::string::npos)
       << missing.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.tif"));
 }

@@ -217,7 +217,7 @@ TEST(Package, DebInstallsAWorkingPrism) {
   // find_package(Prism) (examples/: `prism_example SCENE OUT.tif`), on a
   // shipped scene made small.
   const fs::path examples = fs::path(PRISM_SOURCE_DIR) / "examples";
-  if (fs::is_directory(examples)) {
+  {
     const auto [small, resolutions] =
         replaceLines(slurp(scenes / "glass.sc"), "resolution ", "resolution 64 48");
     ASSERT_EQ(resolutions, 1);
@@ -260,7 +260,7 @@ TEST(Package, DebInstallsAWorkingPrism) {
       pc.out.substr(include + 2, pc.out.find_first_of(" \n", include) - include - 2);
   EXPECT_TRUE(fs::is_regular_file(fs::path(includeDir) / "core/render/renderer.h")) << pc.out;
   // ... and they are enough: the example built with nothing but them.
-  if (fs::is_directory(examples)) {
+  {
     const RunResult build =
         run(dir, shellWord(PRISM_CXX_COMPILER) + " -std=c++20 " + flags + " " +
                      quoted(examples / "render_scene.cpp") + " -o " + quoted(dir / "pc_example") +
@@ -273,6 +273,38 @@ TEST(Package, DebInstallsAWorkingPrism) {
     EXPECT_EQ(example.exitCode, 0) << shown(example);
     EXPECT_EQ(tiffSize(dir / "pc_example.tif"), std::make_pair(64, 48));
   }
+
+#ifdef PRISM_PYTHON
+  // The Python package, unpacked: `import prism` from its dist-packages
+  // folder runs the whole unittest suite (which reads the source tree's
+  // scenes), finding the OpenImageIO module below the same prefix (its EXR
+  // test needs it).
+  const fs::path extension = findBelow(usr, "__init__.py").parent_path();
+  ASSERT_EQ(extension.filename(), "prism") << "no Python package in the .deb";
+  const std::string preload = PRISM_PYTHON_PRELOAD;
+  const RunResult python =
+      run(fs::path(PRISM_SOURCE_DIR) / "python/tests",
+          "PYTHONPATH=" + quoted(extension.parent_path()) +
+              " PYTHONDONTWRITEBYTECODE=1 PRISM_SOURCE_DIR=" + quoted(PRISM_SOURCE_DIR) +
+              (preload.empty() ? std::string()
+                               : " LD_PRELOAD=" + quoted(fs::path(preload)) +
+                                     " ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}"
+                                     "detect_leaks=0\"") +
+              " " + quoted(PRISM_PYTHON) + " -m unittest test_prism");
+  EXPECT_EQ(python.exitCode, 0) << shown(python);
+  EXPECT_NE(python.err.find("Ran "), std::string::npos) << shown(python);
+  EXPECT_EQ(python.err.find("Ran 0 tests"), std::string::npos) << shown(python);
+  EXPECT_NE(python.err.find("\nOK"), std::string::npos) << shown(python);
+  // ... and it is the unpacked one that was imported.
+  const RunResult where =
+      run(dir, "PYTHONPATH=" + quoted(extension.parent_path()) +
+                   (preload.empty() ? std::string()
+                                    : " LD_PRELOAD=" + quoted(fs::path(preload)) +
+                                          " ASAN_OPTIONS=detect_leaks=0") +
+                   " " + quoted(PRISM_PYTHON) + " -c 'import prism; print(prism.__file__)'");
+  EXPECT_EQ(where.exitCode, 0) << shown(where);
+  EXPECT_EQ(where.out.rfind(root.string(), 0), 0u) << where.out;
+#endif
 }
 
 } // namespace

@@ -598,8 +598,7 @@ TEST(ParserErrors, FormatAndWhat) {
 // name or message cannot reach the terminal.
 TEST(ParserErrors, WarningsAreFormattedPrintableLikeErrors) {
   const Diagnostic d{"dir/\x1b[2Ja.obj", 3, 1, "unsupported statement 'curv\x07'"};
-  EXPECT_EQ(formatWarning(d),
-            "dir/\\x1b[2Ja.obj:3:1: warning: unsupported statement 'curv\\x07'");
+  EXPECT_EQ(formatWarning(d), "dir/\\x1b[2Ja.obj:3:1: warning: unsupported statement 'curv\\x07'");
 }
 
 TEST(ParserErrors, UnknownKeyword) {

@@ -95,10 +95,10 @@ private:
 
 // What a render is asked to do (docs/rendering-model.md, docs/image-formation.md).
 struct RenderOptions {
-  int width = 0;  // pixels; 0: the scene's resolution
-  int height = 0; // both given or both 0
-  int depth = 5;  // maximum ray depth, >= 1 (1: eye rays and shadows only)
-  double thresh = 0.1; // antialiasing threshold in [0, 1], a fraction of avgmax
+  int width = 0;         // pixels; 0: the scene's resolution
+  int height = 0;        // both given or both 0
+  int depth = 5;         // maximum ray depth, >= 1 (1: eye rays and shadows only)
+  double thresh = 0.1;   // antialiasing threshold in [0, 1], a fraction of avgmax
   bool antialias = true; // false: pass 1 only, one ray per pixel centre
   bool jitter = false;   // jitter pass 2's sub-samples within their cells
   double bailout = 0.0;  // >= 0; 0 traces exactly (core/render/bailout.h)

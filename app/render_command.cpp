@@ -362,20 +362,10 @@ int runRenderCommand(const RenderCommandOptions& o, ProcessGroup* group) {
   stats.scene = isStdio(o.scene) ? "<stdin>" : o.scene;
   stats.machine = machineDescription();
   stats.accel = accelKindName(o.accel);
-  stats.width = settings.width;
-  stats.height = settings.height;
-  stats.maxDepth = settings.maxDepth;
-  stats.thresh = settings.thresh;
-  stats.jitter = settings.jitter;
-  stats.noAa = settings.noAa;
-  stats.bailout = settings.bailout;
-  stats.threads = settings.threads;
   stats.primitives = scene.primitiveCount();
   stats.loadSeconds = loadSeconds;
   stats.buildSeconds = buildSeconds;
-  stats.counts = result.counts;
-  stats.supersampledPixels = result.supersampledPixels;
-  stats.avgmax = result.avgmax;
+  recordInStats(settings, result, stats);
   if (!o.quiet) std::cerr << formatStatsText(stats);
   if (!o.statsJson.empty()) {
     const std::string json = formatStatsJson(stats);

@@ -175,20 +175,10 @@ Image render(const LoadedScene& scene, const RenderOptions& options,
   stats.scene = scene.name();
   stats.machine = machineDescription();
   stats.accel = accelKindName(AccelKind::Bvh);
-  stats.width = settings.width;
-  stats.height = settings.height;
-  stats.maxDepth = settings.maxDepth;
-  stats.thresh = settings.thresh;
-  stats.jitter = settings.jitter;
-  stats.noAa = settings.noAa;
-  stats.bailout = settings.bailout;
-  stats.threads = settings.threads;
   stats.primitives = scene.scene().primitiveCount();
   stats.loadSeconds = scene.loadSeconds();
   stats.buildSeconds = scene.buildSeconds();
-  stats.counts = result.counts;
-  stats.supersampledPixels = result.supersampledPixels;
-  stats.avgmax = result.avgmax;
+  recordInStats(settings, result, stats);
   return image;
 }
 
@@ -237,9 +227,10 @@ RayTreeNode pixelRayTree(const LoadedScene& scene, const RenderOptions& options,
     throw std::invalid_argument("pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                                 ") is outside the " + std::to_string(settings.width) + " x " +
                                 std::to_string(settings.height) + " image");
-  if (text) *text = pixelRayTreeText(scene.scene(), scene.accel(), settings, x, y);
   RayCounts counts;
-  return prism::pixelRayTree(scene.scene(), scene.accel(), settings, x, y, counts);
+  RayTreeNode root = prism::pixelRayTree(scene.scene(), scene.accel(), settings, x, y, counts);
+  if (text) *text = formatPixelRayTree(scene.scene(), settings, x, y, root, counts);
+  return root;
 }
 
 } // namespace prism::api

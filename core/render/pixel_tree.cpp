@@ -22,6 +22,11 @@ std::string pixelRayTreeText(const Scene& scene, const Accel& accel, const Rende
                              int x, int y) {
   RayCounts counts;
   const RayTreeNode root = pixelRayTree(scene, accel, settings, x, y, counts);
+  return formatPixelRayTree(scene, settings, x, y, root, counts);
+}
+
+std::string formatPixelRayTree(const Scene& scene, const RenderSettings& settings, int x, int y,
+                               const RayTreeNode& root, const RayCounts& counts) {
   std::ostringstream out;
   out << "pixel (" << x << ", " << y << ") of " << settings.width << " x " << settings.height
       << ", max depth " << settings.maxDepth << ": centre ray\n";

@@ -14,6 +14,10 @@ namespace prism {
 RayTreeNode pixelRayTree(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                          int x, int y, RayCounts& counts);
 
+// That record as text: what `prism render --pixel X Y` prints.
+std::string formatPixelRayTree(const Scene& scene, const RenderSettings& settings, int x, int y,
+                               const RayTreeNode& root, const RayCounts& counts);
+
 std::string pixelRayTreeText(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                              int x, int y);
 

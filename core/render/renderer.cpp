@@ -44,8 +44,7 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
 }
 
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
-                    Executor& executor, const ProgressCallback& progress,
-                    const StopCheck& stop) {
+                    Executor& executor, const ProgressCallback& progress, const StopCheck& stop) {
   // Pass 1 in one go: a preview level would only change the order.
   const PassSchedule schedule(scene, accel, settings);
   RenderResult result;
@@ -58,6 +57,20 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
   result.supersampledPixels =
       std::count(result.film.supersampled.begin(), result.film.supersampled.end(), std::uint8_t(1));
   return result;
+}
+
+void recordInStats(const RenderSettings& settings, const RenderResult& result, RenderStats& stats) {
+  stats.width = settings.width;
+  stats.height = settings.height;
+  stats.maxDepth = settings.maxDepth;
+  stats.thresh = settings.thresh;
+  stats.jitter = settings.jitter;
+  stats.noAa = settings.noAa;
+  stats.bailout = settings.bailout;
+  stats.threads = settings.threads;
+  stats.counts = result.counts;
+  stats.supersampledPixels = result.supersampledPixels;
+  stats.avgmax = result.avgmax;
 }
 
 } // namespace prism

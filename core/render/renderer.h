@@ -9,6 +9,7 @@
 #include "core/render/executor.h"
 #include "core/render/film.h"
 #include "core/render/ray_counts.h"
+#include "core/render/stats.h"
 
 #include <functional>
 
@@ -64,5 +65,9 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings
 RenderResult render(const Scene& scene, const Accel& accel, const RenderSettings& settings,
                     Executor& executor, const ProgressCallback& progress = {},
                     const StopCheck& stop = {});
+
+// A render's settings and what it counted (rays, supersampled pixels,
+// avgmax) into its statistics; the scene, machine and times are the caller's.
+void recordInStats(const RenderSettings& settings, const RenderResult& result, RenderStats& stats);
 
 } // namespace prism

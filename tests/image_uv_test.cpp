@@ -353,6 +353,31 @@ f 1/1 2/2 3/3 4/4
   EXPECT_NEAR(decoded(128), 0.2158605, 1e-6);
 }
 
+// Files written on Windows name folders with backslashes; they are found
+// with slashes where the name as written does not exist, and a name that
+// really holds a backslash is kept.
+TEST_F(ObjUv, BackslashesSeparateFoldersOnlyWhereThatFindsTheFile) {
+  const fs::path texture = writeTexture("maps/tex.png");
+  write("mtl/t.mtl", "newmtl m\nKd 1 1 1\nmap_Kd ..\\maps\\tex.png\n");
+  const std::string faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n";
+  const Scene scene = loadObj(write("t.obj", "mtllib mtl\\t.mtl\n" + faces));
+  ASSERT_EQ(scene.shapes<Triangle>().size(), 1u);
+  ASSERT_TRUE(scene.images);
+  EXPECT_EQ(fs::path(scene.images->info(0).path), fs::absolute(texture));
+
+  // A file whose name holds the backslash, next to the folder it could mean.
+  const fs::path literal = writeTexture("maps\\tex.png");
+  ASSERT_EQ(literal.filename().string(), "maps\\tex.png");
+  write("u.mtl", "newmtl m\nKd 1 1 1\nmap_Kd maps\\tex.png\n");
+  const Scene kept = loadObj(write("u.obj", "mtllib u.mtl\n" + faces));
+  ASSERT_TRUE(kept.images);
+  EXPECT_EQ(fs::path(kept.images->info(0).path), fs::absolute(literal));
+
+  // Neither exists: the message quotes the name as written.
+  EXPECT_EQ(errorsOf("mtllib t.mtl\n" + faces, "newmtl m\nmap_Kd no\\such.png\n"),
+            "DIR/t.mtl:2:8: error: map_Kd: cannot read 'DIR/no\\such.png': no such file");
+}
+
 TEST_F(ObjUv, Errors) {
   const std::string obj = "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n";
   EXPECT_EQ(errorsOf(obj, "newmtl m\nKd 1 1 1\nmap_Kd -s 2 2 missing.png\n"),

@@ -354,6 +354,24 @@ void normalise(std::string& text, WriteStatement writeStatement) {
 
 void normaliseMtlForTinyObj(std::string& text) { normalise(text, writeMtlStatement); }
 
+// A file named in an OBJ or MTL file, relative to that file's `directory`.
+// Exporters on Windows write folders with backslashes (`maps\wood.png`). A
+// backslash is a legal character of a name here, so such a name is read with
+// each backslash as a folder separator only where that file exists and the
+// name as written does not; a message about a missing file quotes the name
+// as written.
+std::filesystem::path referencedFile(const std::filesystem::path& directory,
+                                     std::string_view written) {
+  const std::filesystem::path asWritten = (directory / std::string(written)).lexically_normal();
+  if (written.find('\\') == std::string_view::npos) return asWritten;
+  std::error_code ec;
+  if (std::filesystem::exists(asWritten, ec)) return asWritten;
+  std::string separated(written);
+  std::replace(separated.begin(), separated.end(), '\\', '/');
+  const std::filesystem::path slashed = (directory / separated).lexically_normal();
+  return std::filesystem::exists(slashed, ec) ? slashed : asWritten;
+}
+
 // `map_Kd [OPTIONS] FILE` of MTL file `name`: the options Prism maps (-s, -o,
 // -clamp) taken, the others' arguments checked and skipped, FILE (the rest of
 // the line, so it may hold spaces) resolved against the file's directory.
@@ -437,9 +455,7 @@ std::optional<DiffuseMap> diffuseMap(const Line& line, const std::string& name, 
   }
   const Token& file = line.words[i];
   map.path =
-      (std::filesystem::path(name).parent_path() / std::filesystem::path(span(line.words, i)))
-          .lexically_normal()
-          .string();
+      referencedFile(std::filesystem::path(name).parent_path(), span(line.words, i)).string();
   map.library = name;
   map.line = file.line;
   map.column = file.column;
@@ -610,10 +626,7 @@ ObjScan scanObj(std::string_view text, const std::string& name,
           continue;
         }
         for (std::size_t i = 1; i < line.words.size(); ++i) {
-          const std::filesystem::path path =
-              (directory / std::filesystem::path(std::string(line.words[i].text)))
-                  .lexically_normal();
-          scanLibrary(path, line.words[i], s, scan);
+          scanLibrary(referencedFile(directory, line.words[i].text), line.words[i], s, scan);
         }
       } else if (!ignoredObjStatement(k)) {
         s.error(keyword, "unknown statement " + quoted(k));

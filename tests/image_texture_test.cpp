@@ -190,6 +190,29 @@ TEST(ImageTexture, FootprintStraightOnAndOblique) {
   EXPECT_NEAR(std::abs(oblique.image.dy.y), 0.04, 1e-9); // along: y, doubled
 }
 
+// On a sphere only the longitude wraps. Straight on at (0, 0, 1) of the unit
+// sphere, 3 units from the eye with a spread of 1, the footprint is 3 wide:
+// its half-axes reach 1.5 from the point on the tangent plane, up to
+// latitudes +-atan(1.5), so t spans 2 atan(1.5) / pi = 0.626 (more than
+// half the image, which must not be read as 0.374 the other way round), and
+// s spans 2 atan(1.5) / 2 pi = 0.313.
+TEST(ImageTexture, FootprintOnASphereWrapsOnlyTheLongitude) {
+  SmallImage small;
+  const Scene scene = parseScene("surface 1 1 1  1 0 0  1 1\nimage small.png\nsphere 0 0 0 1\n",
+                                 (small.dir.path() / "g.sc").string());
+  const RayTreeNode hit = traced(scene, {{0.0, 0.0, 4.0}, {0, 0, -1}}, 1.0);
+  ASSERT_TRUE(hit.hit);
+  EXPECT_NEAR(hit.image.footprint, 3.0, 1e-12);
+  const Vec2 dx = hit.image.dx, dy = hit.image.dy;
+  // One axis runs along the latitude, the other along the longitude.
+  const Vec2 latitude = std::abs(dx.y) > std::abs(dy.y) ? dx : dy;
+  const Vec2 longitude = std::abs(dx.y) > std::abs(dy.y) ? dy : dx;
+  EXPECT_NEAR(std::abs(latitude.y), 2.0 * std::atan(1.5) / M_PI, 1e-12);
+  EXPECT_NEAR(latitude.x, 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(longitude.x), std::atan(1.5) / M_PI, 1e-12);
+  EXPECT_NEAR(longitude.y, 0.0, 1e-12);
+}
+
 // Through a flat mirror the cone keeps its spread: the width at the floor is
 // the spread times the whole path. Through a slab of index 1.5 at normal
 // incidence the spread is divided by 1.5 inside and restored outside.

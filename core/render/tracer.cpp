@@ -231,16 +231,25 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts
 }
 
 namespace {
-// Whether a kind's surface coordinates run around it (an angle's fraction of
-// a turn), so that two points across the seam differ by about a whole turn.
-bool wrapsAround(PrimitiveKind kind) {
-  return kind != kindOf<Polygon> && kind != kindOf<Triangle> && kind != kindOf<Box>;
+// Which of a kind's surface coordinates run around it (an angle's fraction
+// of a turn), so that two points across the seam differ by about a whole
+// turn: u, the angle about the axis, of every round kind; v too on a torus
+// (the angle round its tube). A sphere's v is a latitude from pole to pole:
+// a footprint wider than half of it (a globe a few pixels wide) is a wide
+// footprint, not a short one the other way round. A CSG solid's coordinates
+// are those of the operand at the point, which may be a torus: both wrap.
+struct Seams {
+  bool u, v;
+};
+Seams seamsOf(PrimitiveKind kind) {
+  if (kind == kindOf<Polygon> || kind == kindOf<Triangle> || kind == kindOf<Box>)
+    return {false, false};
+  return {true, kind == kindOf<Torus> || kind == kindOf<Csg>};
 }
 
 // `d` taken the short way round where coordinates wrap.
-Vec2 acrossSeam(Vec2 d, bool wraps) {
-  if (!wraps) return d;
-  return {d.x - std::round(d.x), d.y - std::round(d.y)};
+Vec2 acrossSeam(Vec2 d, Seams seams) {
+  return {seams.u ? d.x - std::round(d.x) : d.x, seams.v ? d.y - std::round(d.y) : d.y};
 }
 } // namespace
 
@@ -276,10 +285,10 @@ Color Tracer::imageColor(const Ray& ray, const Hit& hit, const Vec3& point,
   const Vec3 b = (0.5 * width / cosine) * along;
   const PrimitiveRef ref = hit.primitive;
   auto uv = [&](const Vec3& p) { return scene_.imageCoordinates(ref, p); };
-  const bool wraps = wrapsAround(ref.kind);
+  const Seams seams = seamsOf(ref.kind);
   const Vec2 st = uv(point) * map.scale + map.offset;
-  const Vec2 dx = acrossSeam(uv(point + a) - uv(point - a), wraps) * map.scale;
-  const Vec2 dy = acrossSeam(uv(point + b) - uv(point - b), wraps) * map.scale;
+  const Vec2 dx = acrossSeam(uv(point + a) - uv(point - a), seams) * map.scale;
+  const Vec2 dy = acrossSeam(uv(point + b) - uv(point - b), seams) * map.scale;
   const Color value = scene_.images->lookup(map, st, dx, dy);
   if (lookup != nullptr) *lookup = {map.image, st, dx, dy, width, value};
   return value;

@@ -32,7 +32,7 @@ const TextureBackend& oiioTextureBackend() {
         reinterpret_cast<PrismTextureCreateFn>(oiioModuleSymbol("prism_oiio_texture_create"));
     b.destroy =
         reinterpret_cast<PrismTextureDestroyFn>(oiioModuleSymbol("prism_oiio_texture_destroy"));
-    b.load = reinterpret_cast<decltype(b.load)>(oiioModuleSymbol("prism_oiio_texture_load"));
+    b.load = reinterpret_cast<PrismTextureLoadFn>(oiioModuleSymbol("prism_oiio_texture_load"));
     b.lookup =
         reinterpret_cast<PrismTextureLookupFn>(oiioModuleSymbol("prism_oiio_texture_lookup"));
     return b;

@@ -4,17 +4,6 @@
 
 namespace prism {
 
-namespace {
-// The backend's description of a loaded image (PrismTextureInfo of
-// core/io/oiio_module.h, the same layout).
-struct LoadedInfo {
-  int width;
-  int height;
-  int encoding; // 1 sRGB, 2 linear
-  float peak[3];
-};
-} // namespace
-
 ImageLibrary::~ImageLibrary() {
   if (library_ != nullptr) backend_.destroy(library_);
 }
@@ -27,7 +16,7 @@ std::variant<std::uint32_t, std::string> ImageLibrary::load(const std::string& p
   for (std::uint32_t i = 0; i < infos_.size(); ++i)
     if (infos_[i].path == resolved && infos_[i].asked == encoding) return i;
   if (library_ == nullptr) library_ = backend_.create();
-  LoadedInfo found{};
+  PrismTextureInfo found{};
   char error[512] = "";
   const int index =
       backend_.load(library_, resolved.c_str(), int(encoding), &found, error, sizeof error);

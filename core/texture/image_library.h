@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/texture/image_map.h"
+#include "core/texture/texture_backend.h"
 
 #include <cstdint>
 #include <string>
@@ -22,16 +23,6 @@ struct ImageInfo {
   int width = 0;
   int height = 0;
   Color peak{0.0}; // the largest linear value of each channel
-};
-
-// The backend's entry points (the C interface of core/io/oiio_module.h).
-struct TextureBackend {
-  void* (*create)();
-  void (*destroy)(void* library);
-  int (*load)(void* library, const char* path, int encoding, void* info, char* error,
-              std::size_t errorSize); // info: a PrismTextureInfo
-  int (*lookup)(void* library, int index, float s, float t, float dsdx, float dtdx, float dsdy,
-                float dtdy, int wrap, int filtered, float* rgb);
 };
 
 class ImageLibrary {

@@ -282,15 +282,18 @@ TEST(Package, DebInstallsAWorkingPrism) {
   const fs::path extension = findBelow(usr, "__init__.py").parent_path();
   ASSERT_EQ(extension.filename(), "prism") << "no Python package in the .deb";
   const std::string preload = PRISM_PYTHON_PRELOAD;
+  // Run in the suite's folder, its output captured in the scratch folder:
+  // nothing may be written into the source tree.
   const RunResult python =
-      run(fs::path(PRISM_SOURCE_DIR) / "python/tests",
-          "PYTHONPATH=" + quoted(extension.parent_path()) +
-              " PYTHONDONTWRITEBYTECODE=1 PRISM_SOURCE_DIR=" + quoted(PRISM_SOURCE_DIR) +
-              (preload.empty() ? std::string()
-                               : " LD_PRELOAD=" + quoted(fs::path(preload)) +
-                                     " ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}"
-                                     "detect_leaks=0\"") +
-              " " + quoted(PRISM_PYTHON) + " -m unittest test_prism");
+      runCaptured("cd " + quoted(fs::path(PRISM_SOURCE_DIR) / "python/tests") + " && " +
+                      "PYTHONPATH=" + quoted(extension.parent_path()) +
+                      " PYTHONDONTWRITEBYTECODE=1 PRISM_SOURCE_DIR=" + quoted(PRISM_SOURCE_DIR) +
+                      (preload.empty() ? std::string()
+                                       : " LD_PRELOAD=" + quoted(fs::path(preload)) +
+                                             " ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}"
+                                             "detect_leaks=0\"") +
+                      " " + quoted(PRISM_PYTHON) + " -m unittest test_prism",
+                  dir);
   EXPECT_EQ(python.exitCode, 0) << shown(python);
   EXPECT_NE(python.err.find("Ran "), std::string::npos) << shown(python);
   EXPECT_EQ(python.err.find("Ran 0 tests"), std::string::npos) << shown(python);

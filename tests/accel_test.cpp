@@ -670,6 +670,66 @@ TEST(Accel, RaysFromFarAwayAgreeWithBruteForce) {
   EXPECT_GT(tally.hits, 500);
 }
 
+// The BVH tests a ray's nodes in single precision where the ray allows it
+// (core/accel/bvh.cpp, FloatNodeTest): small things far from the origin,
+// where a float origin is coarser than the things; tiny and huge scenes;
+// direction components so small that 1/d is near float's limit; and, on the
+// double-precision path, origins beyond 2^100, components below 2^-100 and
+// ranges that start before the origin. Rays from around each cluster and
+// from the points they hit, the whole ray and ranges that end or start
+// inside the cluster.
+TEST(Accel, SinglePrecisionNodeTestsMissNothingAtAnyScale) {
+  struct Cluster {
+    double size;   // the things' spread
+    double offset; // how far from the origin (on every axis)
+  };
+  const Cluster clusters[] = {{1.0, 0.0},  {1e-3, 1e7},  {1e-6, 3e4}, {1e-30, 0.0}, {1e-30, 1e-25},
+                              {1e25, 0.0}, {1e27, 2e29}, {2e-9, 1.0}, {1e26, 3e30}, {1e-31, 0.0}};
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  for (const Cluster& c : clusters) {
+    SCOPED_TRACE("size " + std::to_string(c.size) + " offset " + std::to_string(c.offset));
+    Scene scene;
+    const std::uint32_t mat = addMaterial(scene, Material{});
+    const Vec3 centre(c.offset);
+    auto at = [&] { return centre + c.size * Vec3(u(rng), u(rng), u(rng)); };
+    std::vector<Vec3> corners; // the triangles' vertices: corners of their boxes
+    for (int i = 0; i < 150; ++i) {
+      addSphere(scene, at(), c.size * (0.01 + 0.05 * unit(rng)), mat);
+      if (c.size < 1e-6 * c.offset) continue; // a triangle too small to be one there
+      const Vec3 a = at();
+      const Vec3 e1 = 0.1 * c.size * randomUnit(rng), e2 = 0.1 * c.size * randomUnit(rng);
+      addPolygon(scene, {a, a + e1, a + e1 + e2}, mat);
+      corners.insert(corners.end(), {a, a + e1, a + e1 + e2});
+    }
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    Tally tally;
+    for (int i = 0; i < 1500; ++i) {
+      const Vec3 from = centre + 3.0 * c.size * randomUnit(rng);
+      Vec3 dir = glm::normalize(at() - from);
+      // Now and then a component near float's limits for 1/d: 1e-25 is taken
+      // in single precision, 1e-35 (below 2^-100) in double.
+      if (i % 7 == 3) dir[i % 3] = (i % 2 ? 1e-25 : -1e-35);
+      Interval range;
+      if (i % 5 == 1) range.max = c.size * (2.0 + 2.0 * unit(rng));
+      if (i % 5 == 2) range.min = c.size * (2.0 + unit(rng));
+      if (i % 11 == 4) range.min = -c.size * unit(rng); // the double path
+      expectSameHitAndFromIt(scene, accels, *brute, Ray{from, dir}, range, rng, tally);
+    }
+    // From near the world's origin, far from a cluster that is far from it,
+    // through the triangles' vertices: the ray just clips the boxes' corners,
+    // where a relative error of t (which grows with the distance travelled)
+    // is what the float test must allow for.
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const Vec3 from = c.size * Vec3(u(rng), u(rng), u(rng));
+      expectSameHit(scene, accels, *brute, Ray{from, glm::normalize(corners[i] - from)}, Interval{},
+                    nullptr, tally);
+    }
+    EXPECT_GT(tally.hits, 200);
+  }
+}
+
 // A polygon whose vertices lie a little off its plane (the readers accept
 // 1e-3 of its size) is hit on the plane, which may pass outside the box of
 // the vertices: that box culled hits the polygon's own test finds.

@@ -48,6 +48,20 @@ inline void store(double* out, Lanes a) {
   _mm_storeu_pd(out + 2, a.hi);
 }
 inline Lanes load(const double* p) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2)}; }
+
+// Four float lanes, one per child box: the one-ray node test.
+using LanesF = __m128;
+inline LanesF broadcastF(float x) { return _mm_set1_ps(x); }
+inline LanesF loadF(const float* p) { return _mm_loadu_ps(p); }
+inline LanesF subF(LanesF a, LanesF b) { return _mm_sub_ps(a, b); }
+inline LanesF addF(LanesF a, LanesF b) { return _mm_add_ps(a, b); }
+inline LanesF mulF(LanesF a, LanesF b) { return _mm_mul_ps(a, b); }
+inline LanesF maxOrF(LanesF a, LanesF b) { return _mm_max_ps(a, b); }
+inline LanesF minOrF(LanesF a, LanesF b) { return _mm_min_ps(a, b); }
+inline unsigned lessEqualMaskF(LanesF a, LanesF b) {
+  return unsigned(_mm_movemask_ps(_mm_cmple_ps(a, b)));
+}
+inline void storeF(float* out, LanesF a) { _mm_storeu_ps(out, a); }
 #else
 // Internal and inlined, so GCC's note that such values are passed differently
 // with AVX is moot.
@@ -56,27 +70,37 @@ inline Lanes load(const double* p) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2
 #endif
 using Lanes = double __attribute__((vector_size(32)));
 using LanesF = float __attribute__((vector_size(16)));
-inline Lanes broadcast(double x) { return Lanes{x, x, x, x}; }
-inline Lanes loadBounds(const float* p) {
-  LanesF f;
-  std::memcpy(&f, p, sizeof f);
-  return __builtin_convertvector(f, Lanes);
+// What both widths share: a load from memory and the comparison's bits.
+template <class V, class T> inline V loadLanes(const T* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
 }
-inline Lanes maxOr(Lanes a, Lanes b) { return a > b ? a : b; }
-inline Lanes minOr(Lanes a, Lanes b) { return a < b ? a : b; }
-inline unsigned lessEqualMask(Lanes a, Lanes b) {
+template <class V> inline unsigned lessEqualBits(V a, V b) {
   const auto m = a <= b;
   unsigned mask = 0;
   for (int i = 0; i < 4; ++i)
     mask |= unsigned(m[i] != 0) << i;
   return mask;
 }
-inline void store(double* out, Lanes a) { std::memcpy(out, &a, sizeof a); }
-inline Lanes load(const double* p) {
-  Lanes a;
-  std::memcpy(&a, p, sizeof a);
-  return a;
+inline Lanes broadcast(double x) { return Lanes{x, x, x, x}; }
+inline Lanes loadBounds(const float* p) {
+  return __builtin_convertvector(loadLanes<LanesF>(p), Lanes);
 }
+inline Lanes maxOr(Lanes a, Lanes b) { return a > b ? a : b; }
+inline Lanes minOr(Lanes a, Lanes b) { return a < b ? a : b; }
+inline unsigned lessEqualMask(Lanes a, Lanes b) { return lessEqualBits(a, b); }
+inline void store(double* out, Lanes a) { std::memcpy(out, &a, sizeof a); }
+inline Lanes load(const double* p) { return loadLanes<Lanes>(p); }
+inline LanesF broadcastF(float x) { return LanesF{x, x, x, x}; }
+inline LanesF loadF(const float* p) { return loadLanes<LanesF>(p); }
+inline LanesF subF(LanesF a, LanesF b) { return a - b; }
+inline LanesF addF(LanesF a, LanesF b) { return a + b; }
+inline LanesF mulF(LanesF a, LanesF b) { return a * b; }
+inline LanesF maxOrF(LanesF a, LanesF b) { return a > b ? a : b; }
+inline LanesF minOrF(LanesF a, LanesF b) { return a < b ? a : b; }
+inline unsigned lessEqualMaskF(LanesF a, LanesF b) { return lessEqualBits(a, b); }
+inline void storeF(float* out, LanesF a) { std::memcpy(out, &a, sizeof a); }
 #endif
 
 constexpr std::uint32_t kKindShift = 28; // 4 bits of PrimitiveKind (16 kinds), 28 of index
@@ -103,44 +127,140 @@ SlackOrigin slackOrigin(double origin, double inverseDirection, double slack) {
   return {origin + toward, origin - toward};
 }
 
-// One ray as the node test needs it: origin and reciprocal direction in every
-// lane, and which bound of each axis the ray meets first (the lower one when
-// travelling toward +axis).
-struct NodeRay {
-  Lanes nearOrigin[3]; // the origin for the near bounds (see slackOrigin)
-  Lanes farOrigin[3];
-  Lanes inv[3];
-  int nearRow[3];
-  int farRow[3];
-
-  explicit NodeRay(const Ray& ray) {
+// The node test of one ray in double precision: the reference the float test
+// below is built to contain, and the test of the rays that one cannot take.
+// Holds the origin and reciprocal direction in every lane, and which bound of
+// each axis the ray meets first (the lower one when travelling toward +axis).
+class DoubleNodeTest {
+public:
+  explicit DoubleNodeTest(const Ray& ray) {
     const Vec3 invDir = 1.0 / ray.dir;
     const double slack = boxSlack(ray);
     for (int a = 0; a < 3; ++a) {
       const SlackOrigin o = slackOrigin(ray.origin[a], invDir[a], slack);
-      nearOrigin[a] = broadcast(o.near);
-      farOrigin[a] = broadcast(o.far);
-      inv[a] = broadcast(invDir[a]);
-      nearRow[a] = 2 * a + (invDir[a] < 0.0 ? 1 : 0);
-      farRow[a] = 2 * a + (invDir[a] < 0.0 ? 0 : 1);
+      nearOrigin_[a] = broadcast(o.near);
+      farOrigin_[a] = broadcast(o.far);
+      inv_[a] = broadcast(invDir[a]);
+      nearRow_[a] = 2 * a + (invDir[a] < 0.0 ? 1 : 0);
+      farRow_[a] = 2 * a + (invDir[a] < 0.0 ? 0 : 1);
     }
   }
 
-  // Where the ray enters each of the node's four child boxes (tNear), clipped
-  // to `range`, and which children it meets inside `range` (tNear <= tFar).
-  Lanes enter(const Bvh::Node& node, Interval range, Lanes& tFar) const {
-    Lanes tNear = broadcast(range.min);
-    tFar = broadcast(range.max);
+  // The range of t the children must be entered in; narrowed as hits are found.
+  void setRange(Interval range) { range_ = range; }
+  void setRangeMax(double max) { range_.max = max; }
+
+  // Which of the node's four child boxes the ray meets inside the range (bit
+  // i: child i), and where it enters each (tEnter, clipped to the range).
+  unsigned meet(const Bvh::Node& node, double (&tEnter)[4]) const {
+    Lanes tNear = broadcast(range_.min);
+    Lanes tFar = broadcast(range_.max);
     for (int a = 0; a < 3; ++a) {
-      const Lanes t0 = (loadBounds(node.bounds[nearRow[a]]) - nearOrigin[a]) * inv[a];
-      const Lanes t1 = (loadBounds(node.bounds[farRow[a]]) - farOrigin[a]) * inv[a];
+      const Lanes t0 = (loadBounds(node.bounds[nearRow_[a]]) - nearOrigin_[a]) * inv_[a];
+      const Lanes t1 = (loadBounds(node.bounds[farRow_[a]]) - farOrigin_[a]) * inv_[a];
       // Written so a NaN (0 * inf, for a ray lying in a box's face plane)
       // leaves the range unchanged: that axis does not cull.
       tNear = maxOr(t0, tNear);
       tFar = minOr(t1, tFar);
     }
-    return tNear;
+    store(tEnter, tNear);
+    return lessEqualMask(tNear, tFar);
   }
+
+private:
+  Lanes nearOrigin_[3]; // the origin for the near bounds (see slackOrigin)
+  Lanes farOrigin_[3];
+  Lanes inv_[3];
+  int nearRow_[3];
+  int farRow_[3];
+  Interval range_;
+};
+
+// The same test in single precision: four boxes in one register instead of
+// two, and no conversion of the stored bounds. It meets every box the double
+// test meets, so the walk still finds exactly brute force's nearest hit:
+//  - each origin is moved by the double test's slack plus 2^-22 of the
+//    largest coordinate (and 2^-140), then rounded to the nearest float:
+//    rounding moves it by at most 2^-24 of that, so it stays on the side of
+//    the double test's origin that makes the box wider;
+//  - what remains is relative: the rounding of the subtraction, of 1/d and
+//    of the product, 3 float ulps of t against 2 double ulps, and of the
+//    range's ends, half a float ulp; below float's normal range, an
+//    absolute 2^-150;
+//  - so the entry is moved down and the exit up by 2^-20 of their size (16
+//    float ulps) and by 2^-140, which holds the double test's interval.
+//    Entries and exits are at least 0 (the range starts at 0 or later), so
+//    scaling by 1 - 2^-20 moves an entry down and 1 + 2^-20 an exit up; an
+//    exit that overflows float is infinite, and one of FLT_MAX becomes so.
+// Rays that it cannot take (suits) use DoubleNodeTest.
+class FloatNodeTest {
+public:
+  // Whether the float test can take `ray` over `range`: the range starts at 0
+  // or later; the origin's coordinates are within 2^100 and each direction
+  // component is 0 or of a size from 2^-100 to 2^100, so that 1/d is finite
+  // and not 0 in float (or infinite, exactly where double's is).
+  static bool suits(const Ray& ray, Interval range) {
+    constexpr double kLimit = 0x1p100;
+    bool fits = range.min >= 0.0 && maxAbsComponent(ray.origin) <= kLimit;
+    for (int a = 0; a < 3; ++a) {
+      const double d = std::abs(ray.dir[a]);
+      fits &= d == 0.0 || (d >= 1.0 / kLimit && d <= kLimit);
+    }
+    return fits;
+  }
+
+  explicit FloatNodeTest(const Ray& ray) {
+    const double slack = boxSlack(ray) + (0x1p-22 * maxAbsComponent(ray.origin) + 0x1p-140);
+    for (int a = 0; a < 3; ++a) {
+      // (signbit: a zero component's 1/d is an infinity of its sign.)
+      const bool negative = std::signbit(ray.dir[a]);
+      const SlackOrigin o = slackOrigin(ray.origin[a], negative ? -1.0 : 1.0, slack);
+      nearOrigin_[a] = broadcastF(float(o.near));
+      farOrigin_[a] = broadcastF(float(o.far));
+      inv_[a] = broadcastF(float(1.0 / ray.dir[a]));
+      nearRow_[a] = 2 * a + (negative ? 1 : 0);
+      farRow_[a] = 2 * a + (negative ? 0 : 1);
+    }
+  }
+
+  void setRange(Interval range) {
+    rangeMin_ = broadcastF(float(range.min));
+    setRangeMax(range.max);
+  }
+  void setRangeMax(double max) { rangeMax_ = broadcastF(float(max)); }
+
+  // As DoubleNodeTest::meet.
+  unsigned meet(const Bvh::Node& node, double (&tEnter)[4]) const {
+    LanesF tNear = rangeMin_;
+    LanesF tFar = rangeMax_;
+    for (int a = 0; a < 3; ++a) {
+      const LanesF t0 = mulF(subF(loadF(node.bounds[nearRow_[a]]), nearOrigin_[a]), inv_[a]);
+      const LanesF t1 = mulF(subF(loadF(node.bounds[farRow_[a]]), farOrigin_[a]), inv_[a]);
+      tNear = maxOrF(t0, tNear); // a NaN leaves the range unchanged, as above
+      tFar = minOrF(t1, tFar);
+    }
+    tNear = subF(mulF(tNear, widening_.down), widening_.tiny);
+    tFar = addF(mulF(tFar, widening_.up), widening_.tiny);
+    float entry[4];
+    storeF(entry, tNear);
+    for (int i = 0; i < 4; ++i)
+      tEnter[i] = entry[i];
+    return lessEqualMaskF(tNear, tFar);
+  }
+
+private:
+  struct Widening {
+    LanesF down = broadcastF(1.0f - 0x1p-20f);
+    LanesF up = broadcastF(1.0f + 0x1p-20f);
+    LanesF tiny = broadcastF(0x1p-140f);
+  };
+  LanesF nearOrigin_[3]; // see slackOrigin
+  LanesF farOrigin_[3];
+  LanesF inv_[3];
+  LanesF rangeMin_, rangeMax_;
+  Widening widening_;
+  int nearRow_[3];
+  int farRow_[3];
 };
 
 constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
@@ -307,24 +427,28 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
 template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   if (nodes_.empty() || !isFinite(ray)) return false;
-  const NodeRay nodeRay(ray);
+  if (FloatNodeTest::suits(ray, range))
+    return walk<AnyHit>(FloatNodeTest(ray), ray, range, skip, hit);
+  return walk<AnyHit>(DoubleNodeTest(ray), ray, range, skip, hit);
+}
 
+template <bool AnyHit, class NodeTest>
+bool Bvh::walk(NodeTest test, const Ray& ray, Interval range, const PrimitiveRef* skip,
+               Hit* hit) const {
   struct Entry {
     std::uint32_t ref;
     double t; // where the ray enters the child's box
   };
   TraversalStack<Entry> stack(depth_);
+  test.setRange(range);
   bool found = false;
   Entry current{0, 0.0};
   for (;;) {
     const std::uint32_t ref = current.ref;
     if ((ref & kLeafBit) == 0) {
       const Node& node = nodes_[ref];
-      Lanes tFar;
-      const Lanes tNear = nodeRay.enter(node, range, tFar);
-      const unsigned hitMask = lessEqualMask(tNear, tFar);
       double tEnter[4];
-      store(tEnter, tNear);
+      const unsigned hitMask = test.meet(node, tEnter);
       Entry hits[4];
       int n = 0;
       for (int i = 0; i < 4; ++i)
@@ -336,9 +460,11 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
     } else {
       const std::uint32_t first = ref & kFirstMask;
       const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
+      const double rangeMax = range.max;
       for (std::uint32_t i = first; i < end; ++i)
         if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
           return true;
+      if (range.max != rangeMax) test.setRangeMax(range.max); // a nearer hit narrows the range
     }
     // Next: the nearest waiting child that still starts before the nearest hit.
     if (!stack.pop(range.max, current)) return found;
@@ -409,7 +535,7 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
   double bundleMax = std::numeric_limits<double>::infinity(); // the largest rangeMax
 
   // The rays of `active` (a bit mask) that enter child c of `node`: the
-  // one-ray test of NodeRay::enter, term for term, four rays at a time.
+  // one-ray test of DoubleNodeTest::meet, term for term, four rays at a time.
   auto raysEntering = [&](const Node& node, int c, std::uint64_t active) {
     double toNear[3], toFar[3];
     for (int a = 0; a < 3; ++a) {

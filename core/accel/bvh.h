@@ -2,11 +2,13 @@
 // surface area heuristic (core/accel/sah_builder.h) over every primitive (a long
 // thin cone by slices, core/accel/primitive_boxes.h), ignoring the push/pop
 // groups, and collapsed into 4-wide nodes. A node stores its four
-// children's boxes side by side in single precision, rounded outward, and the
-// four are tested at once in double precision: a box is never missed where the
-// double-precision test on the exact box would hit it, so the nearest hit is
-// the same as brute force, bit for bit. Children are visited nearest first and
-// skipped once they start beyond the nearest hit found.
+// children's boxes side by side in single precision, rounded outward, and a
+// ray tests the four at once in single precision, widened so that it meets
+// every box the double-precision test would (bvh.cpp; a ray too far out for
+// float takes the double test): a box is never missed where a primitive in it
+// is hit, so the nearest hit is the same as brute force, bit for bit.
+// Children are visited nearest first and skipped once they start beyond the
+// nearest hit found.
 #pragma once
 
 #include "core/accel/primitive_boxes.h"
@@ -71,6 +73,10 @@ private:
 
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
+  // The walk of traverse with a node test of bvh.cpp (single or double precision).
+  template <bool AnyHit, class NodeTest>
+  bool walk(NodeTest test, const Ray& ray, Interval range, const PrimitiveRef* skip,
+            Hit* hit) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   const Scene& scene_;

@@ -464,7 +464,9 @@ bool Bvh::walk(NodeTest test, const Ray& ray, Interval range, const PrimitiveRef
       for (std::uint32_t i = first; i < end; ++i)
         if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
           return true;
-      if (range.max != rangeMax) test.setRangeMax(range.max); // a nearer hit narrows the range
+      // A nearer hit narrows the range (an any-hit walk has returned at its first).
+      if constexpr (!AnyHit)
+        if (range.max != rangeMax) test.setRangeMax(range.max);
     }
     // Next: the nearest waiting child that still starts before the nearest hit.
     if (!stack.pop(range.max, current)) return found;

@@ -133,6 +133,7 @@ SlackOrigin slackOrigin(double origin, double inverseDirection, double slack) {
 // each axis the ray meets first (the lower one when travelling toward +axis).
 class DoubleNodeTest {
 public:
+  using Time = double; // of the entries into boxes that meet reports
   explicit DoubleNodeTest(const Ray& ray) {
     const Vec3 invDir = 1.0 / ray.dir;
     const double slack = boxSlack(ray);
@@ -195,33 +196,16 @@ private:
 // Rays that it cannot take (suits) use DoubleNodeTest.
 class FloatNodeTest {
 public:
+  using Time = float;
   // Whether the float test can take `ray` over `range`: the range starts at 0
   // or later; the origin's coordinates are within 2^100 and each direction
   // component is 0 or of a size from 2^-100 to 2^100, so that 1/d is finite
   // and not 0 in float (or infinite, exactly where double's is).
-  static bool suits(const Ray& ray, Interval range) {
-    constexpr double kLimit = 0x1p100;
-    bool fits = range.min >= 0.0 && maxAbsComponent(ray.origin) <= kLimit;
-    for (int a = 0; a < 3; ++a) {
-      const double d = std::abs(ray.dir[a]);
-      fits &= d == 0.0 || (d >= 1.0 / kLimit && d <= kLimit);
-    }
-    return fits;
-  }
+  // Such a ray is finite: a NaN fails every comparison here.
+  static bool suits(const Ray& ray, Interval range);
 
-  explicit FloatNodeTest(const Ray& ray) {
-    const double slack = boxSlack(ray) + (0x1p-22 * maxAbsComponent(ray.origin) + 0x1p-140);
-    for (int a = 0; a < 3; ++a) {
-      // (signbit: a zero component's 1/d is an infinity of its sign.)
-      const bool negative = std::signbit(ray.dir[a]);
-      const SlackOrigin o = slackOrigin(ray.origin[a], negative ? -1.0 : 1.0, slack);
-      nearOrigin_[a] = broadcastF(float(o.near));
-      farOrigin_[a] = broadcastF(float(o.far));
-      inv_[a] = broadcastF(float(1.0 / ray.dir[a]));
-      nearRow_[a] = 2 * a + (negative ? 1 : 0);
-      farRow_[a] = 2 * a + (negative ? 0 : 1);
-    }
-  }
+  // The origins moved by the slack (above) and rounded, 1/d and the rows.
+  explicit FloatNodeTest(const Ray& ray);
 
   void setRange(Interval range) {
     rangeMin_ = broadcastF(float(range.min));
@@ -230,7 +214,7 @@ public:
   void setRangeMax(double max) { rangeMax_ = broadcastF(float(max)); }
 
   // As DoubleNodeTest::meet.
-  unsigned meet(const Bvh::Node& node, double (&tEnter)[4]) const {
+  unsigned meet(const Bvh::Node& node, float (&tEnter)[4]) const {
     LanesF tNear = rangeMin_;
     LanesF tFar = rangeMax_;
     for (int a = 0; a < 3; ++a) {
@@ -239,29 +223,123 @@ public:
       tNear = maxOrF(t0, tNear); // a NaN leaves the range unchanged, as above
       tFar = minOrF(t1, tFar);
     }
-    tNear = subF(mulF(tNear, widening_.down), widening_.tiny);
-    tFar = addF(mulF(tFar, widening_.up), widening_.tiny);
-    float entry[4];
-    storeF(entry, tNear);
-    for (int i = 0; i < 4; ++i)
-      tEnter[i] = entry[i];
+    tNear = subF(mulF(tNear, widenDown_), widenTiny_);
+    tFar = addF(mulF(tFar, widenUp_), widenTiny_);
+    storeF(tEnter, tNear);
     return lessEqualMaskF(tNear, tFar);
   }
 
 private:
-  struct Widening {
-    LanesF down = broadcastF(1.0f - 0x1p-20f);
-    LanesF up = broadcastF(1.0f + 0x1p-20f);
-    LanesF tiny = broadcastF(0x1p-140f);
-  };
   LanesF nearOrigin_[3]; // see slackOrigin
   LanesF farOrigin_[3];
   LanesF inv_[3];
   LanesF rangeMin_, rangeMax_;
-  Widening widening_;
+  // The widening of entries and exits (above). Hidden from the optimiser
+  // (ctor), which would otherwise splat each constant anew at every node.
+  LanesF widenDown_ = broadcastF(1.0f - 0x1p-20f);
+  LanesF widenUp_ = broadcastF(1.0f + 0x1p-20f);
+  LanesF widenTiny_ = broadcastF(0x1p-140f);
   int nearRow_[3];
   int farRow_[3];
 };
+
+constexpr double kFloatTestLimit = 0x1p100; // of FloatNodeTest::suits
+// boxSlack and FloatNodeTest's 2^-22 of the largest coordinate, in one product
+// (its rounding is far below either), and the 2^-140.
+constexpr double kFloatSlackPerCoordinate = kBoxSlackPerCoordinate + 0x1p-22;
+constexpr double kFloatSlackFloor = 0x1p-140;
+
+#if defined(__SSE2__)
+// One ray's setup with its coordinates two to a register: fewer
+// instructions than the scalar loop of other machines below, which matters
+// where a ray visits only a few nodes.
+
+// A Vec3 as two registers: (x, y) and (z, 0).
+struct Pair {
+  __m128d xy, z0;
+};
+Pair loadPair(const Vec3& v) { return {_mm_loadu_pd(&v.x), _mm_load_sd(&v.z)}; }
+Pair absPair(Pair v) {
+  const __m128d sign = _mm_set1_pd(-0.0);
+  return {_mm_andnot_pd(sign, v.xy), _mm_andnot_pd(sign, v.z0)};
+}
+// Bits 0..2 of the comparison's lanes x, y, z (and bit 3 of the unused lane, 0).
+unsigned maskPair(__m128d xy, __m128d z0) {
+  return unsigned(_mm_movemask_pd(xy)) | unsigned(_mm_movemask_pd(z0)) << 2;
+}
+
+inline bool FloatNodeTest::suits(const Ray& ray, Interval range) {
+  const Pair o = absPair(loadPair(ray.origin)), d = absPair(loadPair(ray.dir));
+  const __m128d limit = _mm_set1_pd(kFloatTestLimit), least = _mm_set1_pd(1.0 / kFloatTestLimit);
+  const __m128d zero = _mm_setzero_pd();
+  // The unused lane is 0 in both and passes.
+  auto fits = [&](__m128d oLanes, __m128d dLanes) {
+    const __m128d dInRange = _mm_and_pd(_mm_cmpge_pd(dLanes, least), _mm_cmple_pd(dLanes, limit));
+    return _mm_and_pd(_mm_cmple_pd(oLanes, limit), _mm_or_pd(_mm_cmpeq_pd(dLanes, zero), dInRange));
+  };
+  return range.min >= 0.0 && maskPair(fits(o.xy, d.xy), fits(o.z0, d.z0)) == 0xf;
+}
+
+inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
+  const Pair o = loadPair(ray.origin), d = loadPair(ray.dir);
+  const Pair absO = absPair(o);
+  const __m128d largest2 = _mm_max_pd(absO.xy, absO.z0); // (max |x|,|z|; |y|)
+  const __m128d largest = _mm_max_sd(largest2, _mm_unpackhi_pd(largest2, largest2));
+  __m128d slack = _mm_add_sd(_mm_mul_sd(largest, _mm_set_sd(kFloatSlackPerCoordinate)),
+                             _mm_set_sd(kFloatSlackFloor));
+  slack = _mm_unpacklo_pd(slack, slack);
+  // slackOrigin: the slack takes d's sign (a zero's too: its 1/d is an
+  // infinity of that sign).
+  const __m128d sign = _mm_set1_pd(-0.0);
+  auto toward = [&](__m128d dLanes) { return _mm_or_pd(_mm_and_pd(dLanes, sign), slack); };
+  const __m128d one = _mm_set1_pd(1.0);
+  const __m128 nearXY = _mm_cvtpd_ps(_mm_add_pd(o.xy, toward(d.xy)));
+  const __m128 farXY = _mm_cvtpd_ps(_mm_sub_pd(o.xy, toward(d.xy)));
+  const __m128 invXY = _mm_cvtpd_ps(_mm_div_pd(one, d.xy));
+  const __m128 nearZ = _mm_cvtpd_ps(_mm_add_pd(o.z0, toward(d.z0)));
+  const __m128 farZ = _mm_cvtpd_ps(_mm_sub_pd(o.z0, toward(d.z0)));
+  const __m128 invZ = _mm_cvtpd_ps(_mm_div_sd(one, d.z0));
+  nearOrigin_[0] = _mm_shuffle_ps(nearXY, nearXY, 0x00);
+  nearOrigin_[1] = _mm_shuffle_ps(nearXY, nearXY, 0x55);
+  nearOrigin_[2] = _mm_shuffle_ps(nearZ, nearZ, 0x00);
+  farOrigin_[0] = _mm_shuffle_ps(farXY, farXY, 0x00);
+  farOrigin_[1] = _mm_shuffle_ps(farXY, farXY, 0x55);
+  farOrigin_[2] = _mm_shuffle_ps(farZ, farZ, 0x00);
+  inv_[0] = _mm_shuffle_ps(invXY, invXY, 0x00);
+  inv_[1] = _mm_shuffle_ps(invXY, invXY, 0x55);
+  inv_[2] = _mm_shuffle_ps(invZ, invZ, 0x00);
+  const unsigned negative = maskPair(d.xy, d.z0);
+  for (int a = 0; a < 3; ++a) {
+    nearRow_[a] = 2 * a + int(negative >> a & 1u);
+    farRow_[a] = 2 * a + 1 - int(negative >> a & 1u);
+  }
+  asm("" : "+x"(widenDown_), "+x"(widenUp_), "+x"(widenTiny_));
+}
+#else
+inline bool FloatNodeTest::suits(const Ray& ray, Interval range) {
+  bool fits = range.min >= 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = std::abs(ray.dir[a]);
+    fits &= std::abs(ray.origin[a]) <= kFloatTestLimit &&
+            (d == 0.0 || (d >= 1.0 / kFloatTestLimit && d <= kFloatTestLimit));
+  }
+  return fits;
+}
+
+inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
+  const double slack = kFloatSlackPerCoordinate * maxAbsComponent(ray.origin) + kFloatSlackFloor;
+  for (int a = 0; a < 3; ++a) {
+    // (signbit: a zero component's 1/d is an infinity of its sign.)
+    const bool negative = std::signbit(ray.dir[a]);
+    const SlackOrigin o = slackOrigin(ray.origin[a], negative ? -1.0 : 1.0, slack);
+    nearOrigin_[a] = broadcastF(float(o.near));
+    farOrigin_[a] = broadcastF(float(o.far));
+    inv_[a] = broadcastF(float(1.0 / ray.dir[a]));
+    nearRow_[a] = 2 * a + (negative ? 1 : 0);
+    farRow_[a] = 2 * a + (negative ? 0 : 1);
+  }
+}
+#endif
 
 constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
 
@@ -426,28 +504,29 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
 
 template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
-  if (nodes_.empty() || !isFinite(ray)) return false;
-  if (FloatNodeTest::suits(ray, range))
-    return walk<AnyHit>(FloatNodeTest(ray), ray, range, skip, hit);
-  return walk<AnyHit>(DoubleNodeTest(ray), ray, range, skip, hit);
+  if (nodes_.empty()) return false;
+  if (FloatNodeTest::suits(ray, range)) // and so finite
+    return walk<AnyHit, FloatNodeTest>(ray, range, skip, hit);
+  if (!isFinite(ray)) return false;
+  return walk<AnyHit, DoubleNodeTest>(ray, range, skip, hit);
 }
 
 template <bool AnyHit, class NodeTest>
-bool Bvh::walk(NodeTest test, const Ray& ray, Interval range, const PrimitiveRef* skip,
-               Hit* hit) const {
+bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
+  NodeTest test(ray);
   struct Entry {
     std::uint32_t ref;
-    double t; // where the ray enters the child's box
+    typename NodeTest::Time t; // where the ray enters the child's box
   };
   TraversalStack<Entry> stack(depth_);
   test.setRange(range);
   bool found = false;
-  Entry current{0, 0.0};
+  Entry current{0, 0};
   for (;;) {
     const std::uint32_t ref = current.ref;
     if ((ref & kLeafBit) == 0) {
       const Node& node = nodes_[ref];
-      double tEnter[4];
+      typename NodeTest::Time tEnter[4];
       const unsigned hitMask = test.meet(node, tEnter);
       Entry hits[4];
       int n = 0;

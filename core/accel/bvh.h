@@ -75,8 +75,7 @@ private:
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   // The walk of traverse with a node test of bvh.cpp (single or double precision).
   template <bool AnyHit, class NodeTest>
-  bool walk(NodeTest test, const Ray& ray, Interval range, const PrimitiveRef* skip,
-            Hit* hit) const;
+  bool walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   const Scene& scene_;

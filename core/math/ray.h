@@ -24,7 +24,10 @@ inline bool isFinite(const Ray& ray) { return isFinite(ray.origin) && isFinite(r
 // box test would cull a primitive that its own test hits. 2^-46 of the
 // largest origin coordinate (64 of its ulps) keeps every box test
 // conservative; for ordinary scenes it is far below any modelled detail.
-inline double boxSlack(const Ray& ray) { return 0x1p-46 * maxAbsComponent(ray.origin); }
+constexpr double kBoxSlackPerCoordinate = 0x1p-46;
+inline double boxSlack(const Ray& ray) {
+  return kBoxSlackPerCoordinate * maxAbsComponent(ray.origin);
+}
 
 // What a traced ray is for; statistics and the --pixel ray tree are kept by kind.
 enum class RayKind { Eye, Shadow, Reflected, Transmitted };

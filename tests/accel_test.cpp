@@ -182,10 +182,15 @@ Interval variedRange(int i, std::mt19937& rng) {
   return range;
 }
 
+// Every hierarchy, and the BVH a second time with its one-ray node test in
+// SSE where the first takes AVX (on a processor that has it).
 std::vector<std::unique_ptr<Accel>> accelerated(const Scene& scene) {
   std::vector<std::unique_ptr<Accel>> accels;
   for (AccelKind kind : kAccelerated)
     accels.push_back(makeAccel(scene, kind));
+  Bvh::Options sse;
+  sse.avx = false;
+  accels.push_back(std::make_unique<Bvh>(scene, sse));
   return accels;
 }
 
@@ -835,6 +840,21 @@ TEST(Generators, TheScaledSoupIsTheSoupAtAFinerGrainStoredInSpatialOrder) {
     EXPECT_LT(stepScaled / double(n - 1), 4.0 * std::cbrt(8.0 / double(n)));
     EXPECT_GT(stepRandom / double(n - 1), 1.0);
   }
+}
+
+// The tests above compare both node tests with brute force where the
+// processor has AVX; this says whether they did.
+TEST(Bvh, TakesTheAvxNodeTestWhereTheProcessorHasIt) {
+  Scene scene;
+  addSphere(scene, Vec3(0.0), 1.0, addMaterial(scene, Material{}));
+  Bvh::Options sse;
+  sse.avx = false;
+  EXPECT_FALSE(Bvh(scene, sse).usesAvx());
+#if defined(__x86_64__)
+  EXPECT_EQ(Bvh(scene).usesAvx(), bool(__builtin_cpu_supports("avx")));
+#else
+  EXPECT_FALSE(Bvh(scene).usesAvx());
+#endif
 }
 
 TEST(Bvh, AtMost64BytesPerPrimitive) {

@@ -2,6 +2,7 @@
 // the same rays, one ray at a time on one thread (docs/vs-embree.md).
 #include "bench/embree/comparison.h"
 #include "bench/embree/isa.h"
+#include "core/accel/bvh.h"
 
 #include "core/io/scene_loader.h"
 #include "core/system/system_info.h"
@@ -36,6 +37,12 @@ std::string fixed(double value, int decimals) {
   return text;
 }
 std::string mrays(double raysPerSecond) { return fixed(raysPerSecond * 1e-6, 2); }
+
+// Whether Prism's one-ray walk tests its nodes in AVX (core/accel/bvh.h).
+bool usesAvx(const Accel& accel) {
+  const auto* bvh = dynamic_cast<const Bvh*>(&accel);
+  return bvh != nullptr && bvh->usesAvx();
+}
 
 const char* qualityName(RTCBuildQuality q) {
   switch (q) {
@@ -138,7 +145,7 @@ int run(const Options& o) {
             << " triangles of polygons, " << c.nativeSpheres << " spheres (native), "
             << c.userPrimitives << " user primitives (Prism's tests); built in "
             << fixed(c.buildSeconds, 3) << " s on 1 thread; Prism's BVH in " << fixed(prismBuild, 3)
-            << " s\n"
+            << " s, one ray's node test in " << (usesAvx(*accel) ? "AVX" : "SSE") << "\n"
             << "rays: eye rays through the pixel centres of " << ro.width << " x " << ro.height
             << (o.rays > 0 ? " (a sample of " + std::to_string(sets.eye.size()) + ", seed " +
                                  std::to_string(o.seed) + ")"

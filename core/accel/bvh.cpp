@@ -12,6 +12,11 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+// The one-ray walk compiled for AVX, chosen at run time (Bvh::walkAvx).
+#if defined(__x86_64__) && defined(__SSE2__) && defined(__GNUC__)
+#define PRISM_BVH_AVX 1
+#include <immintrin.h>
+#endif
 
 namespace prism {
 
@@ -151,21 +156,26 @@ public:
   void setRange(Interval range) { range_ = range; }
   void setRangeMax(double max) { range_.max = max; }
 
-  // Which of the node's four child boxes the ray meets inside the range (bit
-  // i: child i), and where it enters each (tEnter, clipped to the range).
-  unsigned meet(const Bvh::Node& node, double (&tEnter)[4]) const {
-    Lanes tNear = broadcast(range_.min);
-    Lanes tFar = broadcast(range_.max);
-    for (int a = 0; a < 3; ++a) {
-      const Lanes t0 = (loadBounds(node.bounds[nearRow_[a]]) - nearOrigin_[a]) * inv_[a];
-      const Lanes t1 = (loadBounds(node.bounds[farRow_[a]]) - farOrigin_[a]) * inv_[a];
-      // Written so a NaN (0 * inf, for a ray lying in a box's face plane)
-      // leaves the range unchanged: that axis does not cull.
-      tNear = maxOr(t0, tNear);
-      tFar = minOr(t1, tFar);
+  // Which of the node's eight child boxes the ray meets inside the range
+  // (bit i: child i), and where it enters each (tEnter, clipped to the
+  // range). Four at a time.
+  unsigned meet(const Bvh::Node& node, double (&tEnter)[Bvh::kWidth]) const {
+    unsigned mask = 0;
+    for (int h = 0; h < Bvh::kWidth; h += 4) {
+      Lanes tNear = broadcast(range_.min);
+      Lanes tFar = broadcast(range_.max);
+      for (int a = 0; a < 3; ++a) {
+        const Lanes t0 = (loadBounds(node.bounds[nearRow_[a]] + h) - nearOrigin_[a]) * inv_[a];
+        const Lanes t1 = (loadBounds(node.bounds[farRow_[a]] + h) - farOrigin_[a]) * inv_[a];
+        // Written so a NaN (0 * inf, for a ray lying in a box's face plane)
+        // leaves the range unchanged: that axis does not cull.
+        tNear = maxOr(t0, tNear);
+        tFar = minOr(t1, tFar);
+      }
+      store(tEnter + h, tNear);
+      mask |= lessEqualMask(tNear, tFar) << h;
     }
-    store(tEnter, tNear);
-    return lessEqualMask(tNear, tFar);
+    return mask;
   }
 
 private:
@@ -177,8 +187,9 @@ private:
   Interval range_;
 };
 
-// The same test in single precision: four boxes in one register instead of
-// two, and no conversion of the stored bounds. It meets every box the double
+// The same test in single precision: four boxes in one SSE register instead
+// of two (eight in one AVX register: AvxFloatNodeTest), and no conversion of
+// the stored bounds. It meets every box the double
 // test meets, so the walk still finds exactly brute force's nearest hit:
 //  - each origin is moved by the double test's slack plus 2^-22 of the
 //    largest coordinate (and 2^-140), then rounded to the nearest float:
@@ -214,22 +225,26 @@ public:
   void setRangeMax(double max) { rangeMax_ = broadcastF(float(max)); }
 
   // As DoubleNodeTest::meet.
-  unsigned meet(const Bvh::Node& node, float (&tEnter)[4]) const {
-    LanesF tNear = rangeMin_;
-    LanesF tFar = rangeMax_;
-    for (int a = 0; a < 3; ++a) {
-      const LanesF t0 = mulF(subF(loadF(node.bounds[nearRow_[a]]), nearOrigin_[a]), inv_[a]);
-      const LanesF t1 = mulF(subF(loadF(node.bounds[farRow_[a]]), farOrigin_[a]), inv_[a]);
-      tNear = maxOrF(t0, tNear); // a NaN leaves the range unchanged, as above
-      tFar = minOrF(t1, tFar);
+  unsigned meet(const Bvh::Node& node, float (&tEnter)[Bvh::kWidth]) const {
+    unsigned mask = 0;
+    for (int h = 0; h < Bvh::kWidth; h += 4) {
+      LanesF tNear = rangeMin_;
+      LanesF tFar = rangeMax_;
+      for (int a = 0; a < 3; ++a) {
+        const LanesF t0 = mulF(subF(loadF(node.bounds[nearRow_[a]] + h), nearOrigin_[a]), inv_[a]);
+        const LanesF t1 = mulF(subF(loadF(node.bounds[farRow_[a]] + h), farOrigin_[a]), inv_[a]);
+        tNear = maxOrF(t0, tNear); // a NaN leaves the range unchanged, as above
+        tFar = minOrF(t1, tFar);
+      }
+      tNear = subF(mulF(tNear, widenDown_), widenTiny_);
+      tFar = addF(mulF(tFar, widenUp_), widenTiny_);
+      storeF(tEnter + h, tNear);
+      mask |= lessEqualMaskF(tNear, tFar) << h;
     }
-    tNear = subF(mulF(tNear, widenDown_), widenTiny_);
-    tFar = addF(mulF(tFar, widenUp_), widenTiny_);
-    storeF(tEnter, tNear);
-    return lessEqualMaskF(tNear, tFar);
+    return mask;
   }
 
-private:
+protected:
   LanesF nearOrigin_[3]; // see slackOrigin
   LanesF farOrigin_[3];
   LanesF inv_[3];
@@ -341,6 +356,40 @@ inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
 }
 #endif
 
+#if PRISM_BVH_AVX
+// FloatNodeTest's arithmetic on all eight boxes in one AVX register, each
+// per-ray value of the SSE test's lanes duplicated into both halves: the same
+// operations in the same order on each box, so the same answers. Only code
+// compiled for AVX may call meet (Bvh::walkAvx).
+class AvxFloatNodeTest : public FloatNodeTest {
+public:
+  using FloatNodeTest::FloatNodeTest;
+
+  [[gnu::target("avx")]] unsigned meet(const Bvh::Node& node, float (&tEnter)[Bvh::kWidth]) const {
+    __m256 tNear = wide(rangeMin_);
+    __m256 tFar = wide(rangeMax_);
+    for (int a = 0; a < 3; ++a) {
+      const __m256 t0 = _mm256_mul_ps(
+          _mm256_sub_ps(_mm256_load_ps(node.bounds[nearRow_[a]]), wide(nearOrigin_[a])),
+          wide(inv_[a]));
+      const __m256 t1 =
+          _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[farRow_[a]]), wide(farOrigin_[a])),
+                        wide(inv_[a]));
+      tNear = _mm256_max_ps(t0, tNear); // maxps and minps as in the SSE test
+      tFar = _mm256_min_ps(t1, tFar);
+    }
+    tNear = _mm256_sub_ps(_mm256_mul_ps(tNear, wide(widenDown_)), wide(widenTiny_));
+    tFar = _mm256_add_ps(_mm256_mul_ps(tFar, wide(widenUp_)), wide(widenTiny_));
+    _mm256_storeu_ps(tEnter, tNear);
+    return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(tNear, tFar, _CMP_LE_OQ)));
+  }
+
+private:
+  // Four lanes of the SSE test, twice.
+  [[gnu::target("avx")]] static __m256 wide(const LanesF& v) { return _mm256_broadcast_ps(&v); }
+};
+#endif
+
 constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
 
 // The children waiting to be visited, each with where it is first entered
@@ -348,13 +397,14 @@ constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the 
 template <class Entry> class TraversalStack {
 public:
   explicit TraversalStack(int treeDepth) {
-    if (const std::size_t need = 3 * std::size_t(treeDepth) + 1; need > kLocalStack) {
+    if (const std::size_t need = std::size_t(Bvh::kWidth - 1) * std::size_t(treeDepth) + 1;
+        need > kLocalStack) {
       heap_.resize(need);
       entries_ = heap_.data();
     }
   }
 
-  // Sorts the n (at most 4) children just met nearest first, keeps all but the
+  // Sorts the n (at most 8) children just met nearest first, keeps all but the
   // nearest, farthest deepest, and returns the nearest, to descend into at once.
   Entry pushAllButNearest(Entry* children, int n) {
     for (int i = 1; i < n; ++i)
@@ -402,6 +452,9 @@ struct Bvh::BuildContext {
 };
 
 Bvh::Bvh(const Scene& scene, Options options) : scene_(scene) {
+#if PRISM_BVH_AVX
+  avx_ = options.avx && __builtin_cpu_supports("avx");
+#endif
   const std::size_t primitiveCount = scene.primitiveCount();
   if (primitiveCount == 0) return;
   if (primitiveCount > kFirstMask) throw std::length_error("too many primitives for the BVH");
@@ -427,8 +480,9 @@ void Bvh::build(const std::vector<BoxedPrimitive>& boxed) {
   const SahTree tree = buildSahTree(boxes, options);
 
   refs_.reserve(boxed.size());
-  // A 4-wide tree has about a third as many nodes as the binary one has leaves.
-  nodes_.reserve(tree.nodes.size() / 6 + 1);
+  // An 8-wide tree has about a seventh as many nodes as the binary one has
+  // leaves (and it has about half as many leaves as nodes).
+  nodes_.reserve(tree.nodes.size() / 14 + 1);
   BuildContext context{tree, boxed};
   collapse(context, 0, 1);
 }
@@ -451,14 +505,14 @@ std::uint32_t Bvh::emitLeaf(const BuildContext& context, const SahTree::Node& n)
 // largest inner one. Returns the new node's index.
 std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
   const SahTree& tree = context.tree;
-  std::uint32_t kids[4];
+  std::uint32_t kids[kWidth];
   int count = 0;
   if (tree.nodes[b].leaf()) {
     kids[count++] = b; // only for a root that is a leaf
   } else {
     kids[count++] = tree.nodes[b].left;
     kids[count++] = tree.nodes[b].right;
-    while (count < 4) {
+    while (count < kWidth) {
       int open = -1;
       double largest = -1.0;
       for (int i = 0; i < count; ++i) {
@@ -480,11 +534,11 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
   depth_ = std::max(depth_, depth);
   Node node;
   for (int axis = 0; axis < 3; ++axis)
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kWidth; ++i) {
       node.bounds[2 * axis][i] = std::numeric_limits<float>::infinity();
       node.bounds[2 * axis + 1][i] = -std::numeric_limits<float>::infinity();
     }
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < kWidth; ++i)
     node.child[i] = 0;
   for (int i = 0; i < count; ++i) {
     const SahTree::Node& n = tree.nodes[kids[i]];
@@ -505,8 +559,10 @@ std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
 template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   if (nodes_.empty()) return false;
-  if (FloatNodeTest::suits(ray, range)) // and so finite
+  if (FloatNodeTest::suits(ray, range)) { // and so finite
+    if (avx_) return walkAvx<AnyHit>(ray, range, skip, hit);
     return walk<AnyHit, FloatNodeTest>(ray, range, skip, hit);
+  }
   if (!isFinite(ray)) return false;
   return walk<AnyHit, DoubleNodeTest>(ray, range, skip, hit);
 }
@@ -526,11 +582,11 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
     const std::uint32_t ref = current.ref;
     if ((ref & kLeafBit) == 0) {
       const Node& node = nodes_[ref];
-      typename NodeTest::Time tEnter[4];
+      typename NodeTest::Time tEnter[kWidth];
       const unsigned hitMask = test.meet(node, tEnter);
-      Entry hits[4];
+      Entry hits[kWidth];
       int n = 0;
-      for (int i = 0; i < 4; ++i)
+      for (int i = 0; i < kWidth; ++i)
         if ((hitMask >> i) & 1u) hits[n++] = {node.child[i], tEnter[i]};
       if (n > 0) {
         current = stack.pushAllButNearest(hits, n);
@@ -550,6 +606,23 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
     // Next: the nearest waiting child that still starts before the nearest hit.
     if (!stack.pop(range.max, current)) return found;
   }
+}
+
+// The walk and everything it inlines compiled for AVX (flatten), so that the
+// AVX test's meet may be inlined into it; the rest of the program keeps the
+// baseline instruction set, and the constructor takes this path only where
+// the processor (and the system, for the wide registers' state) has AVX. AVX
+// brings no fused multiply-add, so the arithmetic is the same.
+template <bool AnyHit>
+#if PRISM_BVH_AVX
+[[gnu::target("avx"), gnu::flatten]]
+#endif
+bool Bvh::walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
+#if PRISM_BVH_AVX
+  return walk<AnyHit, AvxFloatNodeTest>(ray, range, skip, hit);
+#else
+  return walk<AnyHit, FloatNodeTest>(ray, range, skip, hit); // never taken: avx_ is false
+#endif
 }
 
 // A bundle of rays from one origin walks the tree together. Each node's four
@@ -647,19 +720,22 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
   for (;;) {
     if ((current.ref & kLeafBit) == 0) {
       const Node& node = nodes_[current.ref];
-      Lanes tNear = broadcast(0.0), tFar = broadcast(bundleMax);
-      for (int a = 0; a < 3; ++a) {
-        const Lanes toNear = loadBounds(node.bounds[nearRow[a]]) - bundleNear[a];
-        const Lanes toFar = loadBounds(node.bounds[farRow[a]]) - bundleFar[a];
-        tNear = maxOr(minOr(toNear * invLo[a], toNear * invHi[a]), tNear);
-        tFar = minOr(maxOr(toFar * invLo[a], toFar * invHi[a]), tFar);
+      unsigned mask = 0;
+      double tEnter[kWidth];
+      for (int h = 0; h < kWidth; h += 4) {
+        Lanes tNear = broadcast(0.0), tFar = broadcast(bundleMax);
+        for (int a = 0; a < 3; ++a) {
+          const Lanes toNear = loadBounds(node.bounds[nearRow[a]] + h) - bundleNear[a];
+          const Lanes toFar = loadBounds(node.bounds[farRow[a]] + h) - bundleFar[a];
+          tNear = maxOr(minOr(toNear * invLo[a], toNear * invHi[a]), tNear);
+          tFar = minOr(maxOr(toFar * invLo[a], toFar * invHi[a]), tFar);
+        }
+        mask |= lessEqualMask(tNear, tFar) << h;
+        store(tEnter + h, tNear);
       }
-      const unsigned mask = lessEqualMask(tNear, tFar);
-      double tEnter[4];
-      store(tEnter, tNear);
-      Entry next[4];
+      Entry next[kWidth];
       int n = 0;
-      for (int c = 0; c < 4; ++c) {
+      for (int c = 0; c < kWidth; ++c) {
         if ((mask >> c & 1u) == 0) continue;
         // A leaf's rays are found ray by ray; so are those of a box narrower
         // than the bundle where the bundle meets it, which most rays miss

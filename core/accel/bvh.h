@@ -1,12 +1,13 @@
 // The default acceleration structure: a bounding-volume hierarchy built with the
 // surface area heuristic (core/accel/sah_builder.h) over every primitive (a long
 // thin cone by slices, core/accel/primitive_boxes.h), ignoring the push/pop
-// groups, and collapsed into 4-wide nodes. A node stores its four
+// groups, and collapsed into 8-wide nodes. A node stores its eight
 // children's boxes side by side in single precision, rounded outward, and a
-// ray tests the four at once in single precision, widened so that it meets
-// every box the double-precision test would (bvh.cpp; a ray too far out for
-// float takes the double test): a box is never missed where a primitive in it
-// is hit, so the nearest hit is the same as brute force, bit for bit.
+// ray tests the eight at once in single precision (one AVX register where the
+// processor has AVX, else two SSE registers), widened so that it meets every
+// box the double-precision test would (bvh.cpp; a ray too far out for float
+// takes the double test): a box is never missed where a primitive in it is
+// hit, so the nearest hit is the same as brute force, bit for bit.
 // Children are visited nearest first and skipped once they start beyond the
 // nearest hit found.
 #pragma once
@@ -33,6 +34,9 @@ public:
   // hierarchy of one box per primitive is built instead. 0: no bound (tests).
   struct Options {
     std::size_t maxBytesPerPrimitive = 64;
+    // Whether one ray's node test may use AVX where the processor has it;
+    // false takes the SSE test everywhere (tests, to check both).
+    bool avx = true;
   };
   explicit Bvh(const Scene& scene) : Bvh(scene, Options{}) {}
   Bvh(const Scene& scene, Options options);
@@ -44,20 +48,26 @@ public:
   std::size_t memoryBytes() const override;
 
   std::size_t nodeCount() const { return nodes_.size(); }
+  // Whether one ray's node test runs in AVX: the processor has it, and
+  // Options::avx allowed it.
+  bool usesAvx() const { return avx_; }
   int depth() const { return depth_; }
   // Primitive references in the leaves: the primitive count, plus the extra
   // slices of long cones (core/accel/primitive_boxes.h).
   std::size_t referenceCount() const { return refs_.size(); }
 
-  // 4 children a node; 64-byte aligned, so a node is two cache lines.
-  struct alignas(64) Node {
+  // 8 children a node: 224 bytes, 32-byte aligned so that a row of eight
+  // bounds is one aligned AVX load. (Padded to 256 bytes, four whole cache
+  // lines, the hierarchy outgrew its 64 bytes a primitive.)
+  static constexpr int kWidth = 8;
+  struct alignas(32) Node {
     // bounds[2 * axis + 0] are the children's lower bounds on `axis`,
     // bounds[2 * axis + 1] their upper bounds. An unused slot has an empty box
     // (lower +inf, upper -inf), which no ray hits.
-    float bounds[6][4];
+    float bounds[6][kWidth];
     // An inner node's index, or kLeafBit | (count - 1) << kCountShift | first:
     // the primitives refs_[first, first + count).
-    std::uint32_t child[4];
+    std::uint32_t child[kWidth];
   };
   static constexpr std::uint32_t kLeafBit = 1u << 31;
   static constexpr int kCountShift = 27;
@@ -76,12 +86,16 @@ private:
   // The walk of traverse with a node test of bvh.cpp (single or double precision).
   template <bool AnyHit, class NodeTest>
   bool walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
+  // walk with the single-precision test in one AVX register, compiled for AVX.
+  template <bool AnyHit>
+  bool walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   const Scene& scene_;
   std::vector<Node> nodes_;         // nodes_[0] is the root
   std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 28 | index (bvh.cpp)
   int depth_ = 0;                   // levels of nodes
+  bool avx_ = false;                // one ray's walk takes walkAvx
 };
 
 } // namespace prism

@@ -15,9 +15,10 @@ struct SahOptions {
   int bins = 32;             // candidate split planes per axis are the bins' borders
   std::uint32_t maxLeaf = 8; // a range larger than this is always split
   // Expected cost of testing one primitive, relative to visiting one node. The
-  // 4-wide nodes tested here cost about as much as one of our primitives;
-  // measured on the shipped scenes and the benchmark's generated ones, 0.8
-  // trades a third of the memory for no loss of speed against 1.5.
+  // wide nodes tested here cost about as much as one of our primitives;
+  // measured on the shipped scenes and the benchmark's generated ones (with
+  // 4-wide nodes), 0.8 traded a third of the memory for no loss of speed
+  // against 1.5.
   double intersectCost = 0.8;
   // Past this depth ranges are split at the object median, so pathological
   // inputs (exponentially spaced primitives) cannot make the tree deep.

@@ -189,8 +189,8 @@ private:
 
 // The same test in single precision: four boxes in one SSE register instead
 // of two (eight in one AVX register: AvxFloatNodeTest), and no conversion of
-// the stored bounds. It meets every box the double
-// test meets, so the walk still finds exactly brute force's nearest hit:
+// the stored bounds. It meets every box the double test meets, so the walk
+// still finds exactly brute force's nearest hit:
 //  - each origin is moved by the double test's slack plus 2^-22 of the
 //    largest coordinate (and 2^-140), then rounded to the nearest float:
 //    rounding moves it by at most 2^-24 of that, so it stays on the side of
@@ -501,7 +501,7 @@ std::uint32_t Bvh::emitLeaf(const BuildContext& context, const SahTree::Node& n)
 }
 
 // Makes the node for binary node `b` and its descendants: the node's children
-// are the (up to four) binary descendants left after repeatedly opening the
+// are the (up to eight) binary descendants left after repeatedly opening the
 // largest inner one. Returns the new node's index.
 std::uint32_t Bvh::collapse(BuildContext& context, std::uint32_t b, int depth) {
   const SahTree& tree = context.tree;
@@ -625,7 +625,7 @@ bool Bvh::walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit*
 #endif
 }
 
-// A bundle of rays from one origin walks the tree together. Each node's four
+// A bundle of rays from one origin walks the tree together. Each node's eight
 // boxes are tested once for the whole bundle with interval arithmetic: on each
 // axis the rays' reciprocal directions lie between the least and the greatest
 // of them (all of one sign), so with c = bound - origin, c * inv lies between

@@ -11,6 +11,7 @@
 #include "tools/scene_generators.h"
 
 #include "scene_builder.h"
+#include "test_expect.h"
 
 #include <gtest/gtest.h>
 
@@ -30,17 +31,9 @@ using test::addIn;
 using test::addMaterial;
 using test::addPolygon;
 using test::addSphere;
+using test::randomUnit;
 
 constexpr AccelKind kAccelerated[] = {AccelKind::Bvh, AccelKind::Groups};
-
-Vec3 randomUnit(std::mt19937& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  Vec3 d;
-  do
-    d = Vec3(n(rng), n(rng), n(rng));
-  while (glm::dot(d, d) < 1e-6);
-  return glm::normalize(d);
-}
 
 // A direction that is axis-parallel three times in ten.
 Vec3 randomDirection(std::mt19937& rng) {
@@ -449,6 +442,90 @@ TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {
   }
   EXPECT_GT(tally.queries, 5000);
   EXPECT_GT(tally.hits, 1500);
+}
+
+// A height field of n x n squares, two mesh triangles each over shared
+// vertices (a ray through an edge or a vertex meets two to six triangles at
+// one t), wavy and tilted, with loose triangles of their own vertices
+// crossing it and a few spheres: leaves of four triangles and more, which
+// the BVH tests several at a time, and leaves of mixed kinds. The corners of
+// the squares are returned, to aim at.
+Scene triangleField(std::mt19937& rng, int n, double size, const Vec3& centre,
+                    std::vector<Vec3>& corners) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  Scene scene;
+  const std::uint32_t mat = addMaterial(scene, Material{});
+  SceneBuilder build(scene);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double x = size * (double(i) / n - 0.5), z = size * (double(j) / n - 0.5);
+      const Vec3 v = centre + Vec3(x, 0.1 * size * std::sin(7.0 * x / size) + 0.02 * x, z);
+      scene.meshVertices.push_back(v);
+      corners.push_back(v);
+    }
+  auto at = [&](int i, int j) { return std::uint32_t(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      build.meshTriangle({at(i, j), at(i + 1, j + 1), at(i + 1, j)}, nullptr, mat, Origin{});
+      build.meshTriangle({at(i, j), at(i, j + 1), at(i + 1, j + 1)}, nullptr, mat, Origin{});
+    }
+  for (int k = 0; k < n * n / 4; ++k) {
+    const Vec3 a = centre + 0.5 * size * Vec3(u(rng), 0.2 * u(rng), u(rng));
+    const std::array<Vec3, 3> v{a, a + 0.1 * size * randomUnit(rng),
+                                a + 0.1 * size * randomUnit(rng)};
+    if (!triangleProblem(v[0], v[1], v[2])) build.triangle(v, nullptr, mat, Origin{});
+    if (k % 8 == 0) addSphere(scene, a, 0.02 * size, mat);
+  }
+  return scene;
+}
+
+// Mesh triangles, which the BVH tests up to four at a time
+// (core/accel/triangle_packet.h), against brute force's one by one: rays at
+// the field's vertices and edges (ties between neighbours), grazing it, from
+// its surface, and at scales from 1e-5 to 1e6 and far from the origin.
+TEST(Accel, TriangleMeshesMatchBruteForce) {
+  struct Placement {
+    double size;
+    Vec3 centre;
+  };
+  const Placement placements[] = {
+      {10.0, Vec3(0.0)}, {1e-5, Vec3(0.0)}, {1e6, Vec3(0.0)}, {1.0, Vec3(3e4, -2e4, 1e4)}};
+  constexpr int n = 24; // squares per side
+  std::mt19937 rng(2612);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  std::uniform_int_distribution<int> cell(0, n - 1), side(0, 2);
+  Tally tally;
+  for (const Placement& place : placements) {
+    std::vector<Vec3> corners;
+    const Scene scene = triangleField(rng, n, place.size, place.centre, corners);
+    const auto accels = accelerated(scene);
+    const auto brute = makeAccel(scene, AccelKind::None);
+    for (int i = 0; i < 700; ++i) {
+      const Vec3 from = place.centre + place.size * Vec3(u(rng), 0.3 + unit(rng), u(rng));
+      // A vertex, the middle of an edge (or of a square's diagonal), or a
+      // point inside a square.
+      const int ci = cell(rng), cj = cell(rng), s = side(rng);
+      const Vec3 a = corners[std::size_t(ci * (n + 1) + cj)];
+      const Vec3 b = corners[std::size_t((ci + (s != 1)) * (n + 1) + cj + (s != 0))];
+      const Vec3 c = corners[std::size_t((ci + 1) * (n + 1) + cj)];
+      Vec3 to = a;
+      if (i % 3 == 1) to = 0.5 * (a + b);
+      if (i % 3 == 2) to = a + 0.5 * unit(rng) * (b - a) + 0.5 * unit(rng) * (c - a);
+      if (to == from) continue;
+      Ray ray{from, glm::normalize(to - from)};
+      if (i % 10 == 9) ray.dir = glm::normalize(Vec3(u(rng), 1e-3 * u(rng), u(rng))); // grazing
+      const Interval range = i % 7 == 3 ? Interval{0.0, glm::length(to - from)} : Interval{};
+      Hit h;
+      if (!expectSameHit(scene, accels, *brute, ray, range, nullptr, tally, &h)) continue;
+      // From the point hit, on, skipping the triangle left half of the time.
+      const Ray onSurface{ray.at(h.t), randomDirection(rng)};
+      expectSameHit(scene, accels, *brute, onSurface, Interval{},
+                    i % 2 == 0 ? &h.primitive : nullptr, tally);
+    }
+  }
+  EXPECT_GT(tally.queries, 4000);
+  EXPECT_GT(tally.hits, 2000);
+  EXPECT_GT(tally.ties, 100); // rays through shared edges and vertices
 }
 
 TEST(Accel, AnyHitAgreesWithClosestHitOnOcclusion) {

@@ -14,6 +14,16 @@
 
 namespace prism::test {
 
+// A direction drawn uniformly from the unit sphere.
+inline Vec3 randomUnit(std::mt19937& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  Vec3 d;
+  do
+    d = Vec3(n(rng), n(rng), n(rng));
+  while (glm::dot(d, d) < 1e-6);
+  return glm::normalize(d);
+}
+
 // Each component of `got` within `tolerance` of `want`.
 inline void expectVecNear(const Vec3& got, const Vec3& want, double tolerance) {
   EXPECT_NEAR(got.x, want.x, tolerance);

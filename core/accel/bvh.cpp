@@ -1,59 +1,24 @@
 #include "core/accel/bvh.h"
 
+#include "core/accel/lanes.h"
 #include "core/accel/primitive_boxes.h"
 #include "core/accel/sah_builder.h"
+#include "core/accel/triangle_packet.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-// The one-ray walk compiled for AVX, chosen at run time (Bvh::walkAvx).
-#if defined(__x86_64__) && defined(__SSE2__) && defined(__GNUC__)
-#define PRISM_BVH_AVX 1
-#include <immintrin.h>
-#endif
 
 namespace prism {
 
 namespace {
 
-// Four double lanes, one per child box. With SSE2 (every x86-64) they are two
-// register pairs written out, because GCC lowers 32-byte vector extensions
-// poorly without AVX; elsewhere, GCC/Clang vector extensions.
-#if defined(__SSE2__)
-struct Lanes {
-  __m128d lo, hi;
-};
-inline Lanes broadcast(double x) { return {_mm_set1_pd(x), _mm_set1_pd(x)}; }
-inline Lanes loadBounds(const float* p) {
-  const __m128 f = _mm_loadu_ps(p);
-  return {_mm_cvtps_pd(f), _mm_cvtps_pd(_mm_movehl_ps(f, f))};
-}
-inline Lanes operator-(Lanes a, Lanes b) {
-  return {_mm_sub_pd(a.lo, b.lo), _mm_sub_pd(a.hi, b.hi)};
-}
-inline Lanes operator*(Lanes a, Lanes b) {
-  return {_mm_mul_pd(a.lo, b.lo), _mm_mul_pd(a.hi, b.hi)};
-}
-// a > b ? a : b and a < b ? a : b lane by lane: b wherever either is a NaN.
-inline Lanes maxOr(Lanes a, Lanes b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
-inline Lanes minOr(Lanes a, Lanes b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
-// Bit i set where lane i of a <= b.
-inline unsigned lessEqualMask(Lanes a, Lanes b) {
-  return unsigned(_mm_movemask_pd(_mm_cmple_pd(a.lo, b.lo))) |
-         unsigned(_mm_movemask_pd(_mm_cmple_pd(a.hi, b.hi))) << 2;
-}
-inline void store(double* out, Lanes a) {
-  _mm_storeu_pd(out, a.lo);
-  _mm_storeu_pd(out + 2, a.hi);
-}
-inline Lanes load(const double* p) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2)}; }
+using namespace lanes;
 
+#if defined(__SSE2__)
 // Four float lanes, one per child box: the one-ray node test.
 using LanesF = __m128;
 inline LanesF broadcastF(float x) { return _mm_set1_ps(x); }
@@ -68,35 +33,7 @@ inline unsigned lessEqualMaskF(LanesF a, LanesF b) {
 }
 inline void storeF(float* out, LanesF a) { _mm_storeu_ps(out, a); }
 #else
-// Internal and inlined, so GCC's note that such values are passed differently
-// with AVX is moot.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-using Lanes = double __attribute__((vector_size(32)));
 using LanesF = float __attribute__((vector_size(16)));
-// What both widths share: a load from memory and the comparison's bits.
-template <class V, class T> inline V loadLanes(const T* p) {
-  V v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-template <class V> inline unsigned lessEqualBits(V a, V b) {
-  const auto m = a <= b;
-  unsigned mask = 0;
-  for (int i = 0; i < 4; ++i)
-    mask |= unsigned(m[i] != 0) << i;
-  return mask;
-}
-inline Lanes broadcast(double x) { return Lanes{x, x, x, x}; }
-inline Lanes loadBounds(const float* p) {
-  return __builtin_convertvector(loadLanes<LanesF>(p), Lanes);
-}
-inline Lanes maxOr(Lanes a, Lanes b) { return a > b ? a : b; }
-inline Lanes minOr(Lanes a, Lanes b) { return a < b ? a : b; }
-inline unsigned lessEqualMask(Lanes a, Lanes b) { return lessEqualBits(a, b); }
-inline void store(double* out, Lanes a) { std::memcpy(out, &a, sizeof a); }
-inline Lanes load(const double* p) { return loadLanes<Lanes>(p); }
 inline LanesF broadcastF(float x) { return LanesF{x, x, x, x}; }
 inline LanesF loadF(const float* p) { return loadLanes<LanesF>(p); }
 inline LanesF subF(LanesF a, LanesF b) { return a - b; }
@@ -104,7 +41,7 @@ inline LanesF addF(LanesF a, LanesF b) { return a + b; }
 inline LanesF mulF(LanesF a, LanesF b) { return a * b; }
 inline LanesF maxOrF(LanesF a, LanesF b) { return a > b ? a : b; }
 inline LanesF minOrF(LanesF a, LanesF b) { return a < b ? a : b; }
-inline unsigned lessEqualMaskF(LanesF a, LanesF b) { return lessEqualBits(a, b); }
+inline unsigned lessEqualMaskF(LanesF a, LanesF b) { return maskBits(a <= b); }
 inline void storeF(float* out, LanesF a) { std::memcpy(out, &a, sizeof a); }
 #endif
 
@@ -138,15 +75,16 @@ SlackOrigin slackOrigin(double origin, double inverseDirection, double slack) {
 // each axis the ray meets first (the lower one when travelling toward +axis).
 class DoubleNodeTest {
 public:
-  using Time = double; // of the entries into boxes that meet reports
+  using Time = double;       // of the entries into boxes that meet reports
+  using PacketLanes = Lanes; // of the leaves' triangle packets
   explicit DoubleNodeTest(const Ray& ray) {
     const Vec3 invDir = 1.0 / ray.dir;
     const double slack = boxSlack(ray);
     for (int a = 0; a < 3; ++a) {
       const SlackOrigin o = slackOrigin(ray.origin[a], invDir[a], slack);
-      nearOrigin_[a] = broadcast(o.near);
-      farOrigin_[a] = broadcast(o.far);
-      inv_[a] = broadcast(invDir[a]);
+      nearOrigin_[a] = Lanes::splat(o.near);
+      farOrigin_[a] = Lanes::splat(o.far);
+      inv_[a] = Lanes::splat(invDir[a]);
       nearRow_[a] = 2 * a + (invDir[a] < 0.0 ? 1 : 0);
       farRow_[a] = 2 * a + (invDir[a] < 0.0 ? 0 : 1);
     }
@@ -162,8 +100,8 @@ public:
   unsigned meet(const Bvh::Node& node, double (&tEnter)[Bvh::kWidth]) const {
     unsigned mask = 0;
     for (int h = 0; h < Bvh::kWidth; h += 4) {
-      Lanes tNear = broadcast(range_.min);
-      Lanes tFar = broadcast(range_.max);
+      Lanes tNear = Lanes::splat(range_.min);
+      Lanes tFar = Lanes::splat(range_.max);
       for (int a = 0; a < 3; ++a) {
         const Lanes t0 = (loadBounds(node.bounds[nearRow_[a]] + h) - nearOrigin_[a]) * inv_[a];
         const Lanes t1 = (loadBounds(node.bounds[farRow_[a]] + h) - farOrigin_[a]) * inv_[a];
@@ -208,6 +146,7 @@ private:
 class FloatNodeTest {
 public:
   using Time = float;
+  using PacketLanes = Lanes;
   // Whether the float test can take `ray` over `range`: the range starts at 0
   // or later; the origin's coordinates are within 2^100 and each direction
   // component is 0 or of a size from 2^-100 to 2^100, so that 1/d is finite
@@ -364,6 +303,7 @@ inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
 class AvxFloatNodeTest : public FloatNodeTest {
 public:
   using FloatNodeTest::FloatNodeTest;
+  using PacketLanes = AvxLanes; // the walk is compiled for AVX
 
   [[gnu::target("avx")]] unsigned meet(const Bvh::Node& node, float (&tEnter)[Bvh::kWidth]) const {
     __m256 tNear = wide(rangeMin_);
@@ -389,6 +329,48 @@ private:
   [[gnu::target("avx")]] static __m256 wide(const LanesF& v) { return _mm256_broadcast_ps(&v); }
 };
 #endif
+
+// How many of the next `left` references (at most four) are triangles, from
+// the first on.
+int triangleRun(const std::uint32_t* refs, std::uint32_t left) {
+  constexpr std::uint32_t kTriangle = std::uint32_t(kindOf<Triangle>);
+  int run = 0;
+  while (run < 4 && std::uint32_t(run) < left && refs[run] >> kKindShift == kTriangle)
+    ++run;
+  return run;
+}
+
+// The `count` (2 to 4) triangles refs[0, count) tested at once, and what
+// testLeafPrimitive does with each in turn done with their hits in the same
+// order. Testing all against the range they started with finds the same:
+// a closest-hit walk's keepNearest refuses a later hit beyond an earlier one,
+// as the narrowed range would have.
+template <bool AnyHit, class L>
+bool testTrianglePacket(const Scene& scene, const TrianglePacketTest<L>& test,
+                        const std::uint32_t* refs, int count, Interval& range,
+                        const PrimitiveRef* skip, bool& found, Hit* hit) {
+  const Triangle* triangles = scene.shapes<Triangle>().data();
+  const Vec3* vertices = scene.arrays().meshVertices.data();
+  TriangleCorners corners;
+  for (int lane = 0; lane < 4; ++lane) {
+    const Triangle& tri = triangles[refs[lane < count ? lane : 0] & kIndexMask];
+    for (int k = 0; k < 3; ++k)
+      corners.v[lane][k] = &vertices[tri.vertex[std::size_t(k)]];
+  }
+  double t[4];
+  for (unsigned m = test.hits(corners, (1u << count) - 1, range, t); m != 0; m &= m - 1) {
+    const int lane = std::countr_zero(m);
+    const PrimitiveRef prim = decodeRef(refs[lane]);
+    if (skip != nullptr && prim == *skip) continue;
+    if constexpr (AnyHit) {
+      if (hit != nullptr) *hit = {t[lane], prim};
+      return true;
+    } else {
+      keepNearest({t[lane], prim}, found, *hit, range);
+    }
+  }
+  return false;
+}
 
 constexpr std::size_t kLocalStack = 256; // traversal stack entries kept on the machine stack
 
@@ -497,6 +479,8 @@ std::uint32_t Bvh::emitLeaf(const BuildContext& context, const SahTree::Node& n)
     if (std::find(refs_.begin() + first, refs_.end(), code) == refs_.end()) refs_.push_back(code);
   }
   const auto count = std::uint32_t(refs_.size()) - first;
+  for (std::uint32_t i = first; i + 1 < first + count; ++i)
+    triangleRuns_ |= triangleRun(&refs_[i], 2) == 2;
   return kLeafBit | (count - 1) << kCountShift | first;
 }
 
@@ -560,14 +544,21 @@ template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   if (nodes_.empty()) return false;
   if (FloatNodeTest::suits(ray, range)) { // and so finite
-    if (avx_) return walkAvx<AnyHit>(ray, range, skip, hit);
-    return walk<AnyHit, FloatNodeTest>(ray, range, skip, hit);
+    // Scenes without runs of triangles in their leaves take a walk without
+    // the packet test, so it costs them nothing.
+    if (avx_)
+      return triangleRuns_ ? walkAvx<AnyHit, true>(ray, range, skip, hit)
+                           : walkAvx<AnyHit, false>(ray, range, skip, hit);
+    return triangleRuns_ ? walk<AnyHit, FloatNodeTest, true>(ray, range, skip, hit)
+                         : walk<AnyHit, FloatNodeTest, false>(ray, range, skip, hit);
   }
   if (!isFinite(ray)) return false;
-  return walk<AnyHit, DoubleNodeTest>(ray, range, skip, hit);
+  // The rare rays that float cannot take test their triangles one by one:
+  // the same answers, and fewer copies of the walk.
+  return walk<AnyHit, DoubleNodeTest, false>(ray, range, skip, hit);
 }
 
-template <bool AnyHit, class NodeTest>
+template <bool AnyHit, class NodeTest, bool TrianglePackets>
 bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   NodeTest test(ray);
   struct Entry {
@@ -576,6 +567,8 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
   };
   TraversalStack<Entry> stack(depth_);
   test.setRange(range);
+  // Set up at the first run of triangles: a scene without them pays nothing.
+  std::optional<TrianglePacketTest<typename NodeTest::PacketLanes>> packets;
   bool found = false;
   Entry current{0, 0};
   for (;;) {
@@ -596,9 +589,27 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
       const std::uint32_t first = ref & kFirstMask;
       const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
       const double rangeMax = range.max;
-      for (std::uint32_t i = first; i < end; ++i)
-        if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
-          return true;
+      if constexpr (!TrianglePackets) {
+        for (std::uint32_t i = first; i < end; ++i)
+          if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
+            return true;
+      } else {
+        for (std::uint32_t i = first; i < end;) {
+          // Runs of two to four triangles are tested together.
+          if (const int run = triangleRun(&refs_[i], end - i); run >= 2) {
+            if (!packets) packets.emplace(ray);
+            if (testTrianglePacket<AnyHit>(scene_, *packets, &refs_[i], run, range, skip, found,
+                                           hit))
+              return true;
+            i += std::uint32_t(run);
+          } else {
+            if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found,
+                                          hit))
+              return true;
+            ++i;
+          }
+        }
+      }
       // A nearer hit narrows the range (an any-hit walk has returned at its first).
       if constexpr (!AnyHit)
         if (range.max != rangeMax) test.setRangeMax(range.max);
@@ -613,15 +624,15 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
 // baseline instruction set, and the constructor takes this path only where
 // the processor (and the system, for the wide registers' state) has AVX. AVX
 // brings no fused multiply-add, so the arithmetic is the same.
-template <bool AnyHit>
+template <bool AnyHit, bool TrianglePackets>
 #if PRISM_BVH_AVX
 [[gnu::target("avx"), gnu::flatten]]
 #endif
 bool Bvh::walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
 #if PRISM_BVH_AVX
-  return walk<AnyHit, AvxFloatNodeTest>(ray, range, skip, hit);
+  return walk<AnyHit, AvxFloatNodeTest, TrianglePackets>(ray, range, skip, hit);
 #else
-  return walk<AnyHit, FloatNodeTest>(ray, range, skip, hit); // never taken: avx_ is false
+  return walk<AnyHit, FloatNodeTest, TrianglePackets>(ray, range, skip, hit); // never taken
 #endif
 }
 
@@ -674,10 +685,10 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
     const SlackOrigin o = slackOrigin(rays[0].origin[a], lo, slack);
     nearOrigin[a] = o.near;
     farOrigin[a] = o.far;
-    bundleNear[a] = broadcast(o.near);
-    bundleFar[a] = broadcast(o.far);
-    invLo[a] = broadcast(lo);
-    invHi[a] = broadcast(hi);
+    bundleNear[a] = Lanes::splat(o.near);
+    bundleFar[a] = Lanes::splat(o.far);
+    invLo[a] = Lanes::splat(lo);
+    invHi[a] = Lanes::splat(hi);
     nearRow[a] = 2 * a + (lo < 0.0 ? 1 : 0); // every ray has the sign of lo
     farRow[a] = 2 * a + (lo < 0.0 ? 0 : 1);
     // 1/d is monotonic on d's sign: the directions' range is 1/hi .. 1/lo.
@@ -699,11 +710,11 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
     std::uint64_t entering = 0;
     for (std::size_t i = 0; i < count; i += 4) {
       if ((active >> i & 0xf) == 0) continue;
-      Lanes tNear = broadcast(0.0), tFar = load(&rangeMax[i]);
+      Lanes tNear = Lanes::splat(0.0), tFar = load(&rangeMax[i]);
       for (int a = 0; a < 3; ++a) {
         const Lanes invA = load(&inv[a][i]);
-        tNear = maxOr(broadcast(toNear[a]) * invA, tNear);
-        tFar = minOr(broadcast(toFar[a]) * invA, tFar);
+        tNear = maxOr(Lanes::splat(toNear[a]) * invA, tNear);
+        tFar = minOr(Lanes::splat(toFar[a]) * invA, tFar);
       }
       entering |= std::uint64_t(lessEqualMask(tNear, tFar)) << i;
     }
@@ -723,7 +734,7 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
       unsigned mask = 0;
       double tEnter[kWidth];
       for (int h = 0; h < kWidth; h += 4) {
-        Lanes tNear = broadcast(0.0), tFar = broadcast(bundleMax);
+        Lanes tNear = Lanes::splat(0.0), tFar = Lanes::splat(bundleMax);
         for (int a = 0; a < 3; ++a) {
           const Lanes toNear = loadBounds(node.bounds[nearRow[a]] + h) - bundleNear[a];
           const Lanes toFar = loadBounds(node.bounds[farRow[a]] + h) - bundleFar[a];

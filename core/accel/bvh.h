@@ -9,7 +9,8 @@
 // takes the double test): a box is never missed where a primitive in it is
 // hit, so the nearest hit is the same as brute force, bit for bit.
 // Children are visited nearest first and skipped once they start beyond the
-// nearest hit found.
+// nearest hit found. A leaf's runs of triangles are tested up to four at
+// once (core/accel/triangle_packet.h), with the one-triangle test's answers.
 #pragma once
 
 #include "core/accel/primitive_boxes.h"
@@ -83,11 +84,12 @@ private:
 
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
-  // The walk of traverse with a node test of bvh.cpp (single or double precision).
-  template <bool AnyHit, class NodeTest>
+  // The walk of traverse with a node test of bvh.cpp (single or double
+  // precision), testing a leaf's runs of triangles together or not.
+  template <bool AnyHit, class NodeTest, bool TrianglePackets>
   bool walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   // walk with the single-precision test in one AVX register, compiled for AVX.
-  template <bool AnyHit>
+  template <bool AnyHit, bool TrianglePackets>
   bool walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
@@ -96,6 +98,7 @@ private:
   std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 28 | index (bvh.cpp)
   int depth_ = 0;                   // levels of nodes
   bool avx_ = false;                // one ray's walk takes walkAvx
+  bool triangleRuns_ = false;       // some leaf holds two triangles in a row (bvh.cpp)
 };
 
 } // namespace prism

@@ -480,7 +480,7 @@ Scene triangleField(std::mt19937& rng, int n, double size, const Vec3& centre,
 }
 
 // Mesh triangles, which the BVH tests up to four at a time
-// (core/accel/triangle_packet.h), against brute force's one by one: rays at
+// (core/accel/packets.h), against brute force's one by one: rays at
 // the field's vertices and edges (ties between neighbours), grazing it, from
 // its surface, and at scales from 1e-5 to 1e6 and far from the origin.
 TEST(Accel, TriangleMeshesMatchBruteForce) {

@@ -1,9 +1,9 @@
 #include "core/accel/bvh.h"
 
 #include "core/accel/lanes.h"
+#include "core/accel/packets.h"
 #include "core/accel/primitive_boxes.h"
 #include "core/accel/sah_builder.h"
-#include "core/accel/triangle_packet.h"
 
 #include <algorithm>
 #include <bit>
@@ -76,7 +76,7 @@ SlackOrigin slackOrigin(double origin, double inverseDirection, double slack) {
 class DoubleNodeTest {
 public:
   using Time = double;       // of the entries into boxes that meet reports
-  using PacketLanes = Lanes; // of the leaves' triangle packets
+  using PacketLanes = Lanes; // of the leaves' packets (packets.h)
   explicit DoubleNodeTest(const Ray& ray) {
     const Vec3 invDir = 1.0 / ray.dir;
     const double slack = boxSlack(ray);
@@ -330,35 +330,48 @@ private:
 };
 #endif
 
-// How many of the next `left` references (at most four) are triangles, from
-// the first on.
-int triangleRun(const std::uint32_t* refs, std::uint32_t left) {
-  constexpr std::uint32_t kTriangle = std::uint32_t(kindOf<Triangle>);
+// Leaves' runs of two to four triangles, or of two to four polygons of up to
+// kPacketPolygonVertices vertices tested in the ray's frame, are tested at once
+// (core/accel/packets.h). A run's length, from refs[0] on (at most
+// `left`): up to 4 references of one such kind.
+bool packsTriangle(const Scene&, std::uint32_t code) {
+  return code >> kKindShift == std::uint32_t(kindOf<Triangle>);
+}
+bool packsPolygon(const Scene& scene, std::uint32_t code) {
+  if (code >> kKindShift != std::uint32_t(kindOf<Polygon>)) return false;
+  const Polygon& p = scene.shapes<Polygon>()[code & kIndexMask];
+  return p.rayFrameTest && p.vertexCount <= kPacketPolygonVertices;
+}
+template <class Packs>
+int runOf(const Scene& scene, const std::uint32_t* refs, std::uint32_t left, Packs packs) {
   int run = 0;
-  while (run < 4 && std::uint32_t(run) < left && refs[run] >> kKindShift == kTriangle)
+  while (run < 4 && std::uint32_t(run) < left && packs(scene, refs[run]))
     ++run;
   return run;
 }
 
-// The `count` (2 to 4) triangles refs[0, count) tested at once, and what
-// testLeafPrimitive does with each in turn done with their hits in the same
-// order. Testing all against the range they started with finds the same:
-// a closest-hit walk's keepNearest refuses a later hit beyond an earlier one,
-// as the narrowed range would have.
-template <bool AnyHit, class L>
-bool testTrianglePacket(const Scene& scene, const TrianglePacketTest<L>& test,
-                        const std::uint32_t* refs, int count, Interval& range,
-                        const PrimitiveRef* skip, bool& found, Hit* hit) {
-  const Triangle* triangles = scene.shapes<Triangle>().data();
-  const Vec3* vertices = scene.arrays().meshVertices.data();
-  TriangleCorners corners;
-  for (int lane = 0; lane < 4; ++lane) {
-    const Triangle& tri = triangles[refs[lane < count ? lane : 0] & kIndexMask];
-    for (int k = 0; k < 3; ++k)
-      corners.v[lane][k] = &vertices[tri.vertex[std::size_t(k)]];
-  }
-  double t[4];
-  for (unsigned m = test.hits(corners, (1u << count) - 1, range, t); m != 0; m &= m - 1) {
+// The packet test of the `count` shapes refs[0, count), all of `Kind`
+// (Triangle with TriangleCorners, Polygon with PolygonCorners): hits as
+// bits, at t.
+template <class Kind, class Corners, class L>
+unsigned packetHits(const Scene& scene, const PacketTest<L>& test, const std::uint32_t* refs,
+                    int count, Interval range, double (&t)[4]) {
+  const Kind* shapes = scene.shapes<Kind>().data();
+  Corners corners;
+  for (int lane = 0; lane < 4; ++lane)
+    corners.set(lane, shapes[refs[lane < count ? lane : 0] & kIndexMask], scene.arrays());
+  return test.hits(corners, (1u << count) - 1, range, t);
+}
+
+// What testLeafPrimitive does with each of a packet's primitives in turn,
+// done with their hits (bits of `hits`, at t) in the same order. Testing all
+// against the range they started with finds the same: a closest-hit walk's
+// keepNearest refuses a later hit beyond an earlier one, as the narrowed
+// range would have.
+template <bool AnyHit>
+bool offerPacketHits(const std::uint32_t* refs, unsigned hits, const double (&t)[4],
+                     Interval& range, const PrimitiveRef* skip, bool& found, Hit* hit) {
+  for (unsigned m = hits; m != 0; m &= m - 1) {
     const int lane = std::countr_zero(m);
     const PrimitiveRef prim = decodeRef(refs[lane]);
     if (skip != nullptr && prim == *skip) continue;
@@ -480,7 +493,8 @@ std::uint32_t Bvh::emitLeaf(const BuildContext& context, const SahTree::Node& n)
   }
   const auto count = std::uint32_t(refs_.size()) - first;
   for (std::uint32_t i = first; i + 1 < first + count; ++i)
-    triangleRuns_ |= triangleRun(&refs_[i], 2) == 2;
+    packetRuns_ |= runOf(scene_, &refs_[i], 2, packsTriangle) == 2 ||
+                   runOf(scene_, &refs_[i], 2, packsPolygon) == 2;
   return kLeafBit | (count - 1) << kCountShift | first;
 }
 
@@ -544,21 +558,21 @@ template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   if (nodes_.empty()) return false;
   if (FloatNodeTest::suits(ray, range)) { // and so finite
-    // Scenes without runs of triangles in their leaves take a walk without
-    // the packet test, so it costs them nothing.
+    // Scenes without runs to pack in their leaves take a walk without the
+    // packet tests, so they cost them nothing.
     if (avx_)
-      return triangleRuns_ ? walkAvx<AnyHit, true>(ray, range, skip, hit)
-                           : walkAvx<AnyHit, false>(ray, range, skip, hit);
-    return triangleRuns_ ? walk<AnyHit, FloatNodeTest, true>(ray, range, skip, hit)
-                         : walk<AnyHit, FloatNodeTest, false>(ray, range, skip, hit);
+      return packetRuns_ ? walkAvx<AnyHit, true>(ray, range, skip, hit)
+                         : walkAvx<AnyHit, false>(ray, range, skip, hit);
+    return packetRuns_ ? walk<AnyHit, FloatNodeTest, true>(ray, range, skip, hit)
+                       : walk<AnyHit, FloatNodeTest, false>(ray, range, skip, hit);
   }
   if (!isFinite(ray)) return false;
-  // The rare rays that float cannot take test their triangles one by one:
+  // The rare rays that float cannot take test their primitives one by one:
   // the same answers, and fewer copies of the walk.
   return walk<AnyHit, DoubleNodeTest, false>(ray, range, skip, hit);
 }
 
-template <bool AnyHit, class NodeTest, bool TrianglePackets>
+template <bool AnyHit, class NodeTest, bool Packets>
 bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   NodeTest test(ray);
   struct Entry {
@@ -567,8 +581,8 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
   };
   TraversalStack<Entry> stack(depth_);
   test.setRange(range);
-  // Set up at the first run of triangles: a scene without them pays nothing.
-  std::optional<TrianglePacketTest<typename NodeTest::PacketLanes>> packets;
+  // Set up at the first run to pack.
+  std::optional<PacketTest<typename NodeTest::PacketLanes>> packets;
   bool found = false;
   Entry current{0, 0};
   for (;;) {
@@ -589,25 +603,30 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
       const std::uint32_t first = ref & kFirstMask;
       const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
       const double rangeMax = range.max;
-      if constexpr (!TrianglePackets) {
+      if constexpr (!Packets) {
         for (std::uint32_t i = first; i < end; ++i)
           if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
             return true;
       } else {
         for (std::uint32_t i = first; i < end;) {
-          // Runs of two to four triangles are tested together.
-          if (const int run = triangleRun(&refs_[i], end - i); run >= 2) {
+          const std::uint32_t* at = &refs_[i];
+          double t[4];
+          unsigned hits;
+          int run = runOf(scene_, at, end - i, packsTriangle);
+          if (run >= 2) {
             if (!packets) packets.emplace(ray);
-            if (testTrianglePacket<AnyHit>(scene_, *packets, &refs_[i], run, range, skip, found,
-                                           hit))
-              return true;
-            i += std::uint32_t(run);
+            hits = packetHits<Triangle, TriangleCorners>(scene_, *packets, at, run, range, t);
+          } else if (run = runOf(scene_, at, end - i, packsPolygon); run >= 2) {
+            if (!packets) packets.emplace(ray);
+            hits = packetHits<Polygon, PolygonCorners>(scene_, *packets, at, run, range, t);
           } else {
-            if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found,
-                                          hit))
+            if (testLeafPrimitive<AnyHit>(scene_, decodeRef(*at), ray, range, skip, found, hit))
               return true;
             ++i;
+            continue;
           }
+          if (offerPacketHits<AnyHit>(at, hits, t, range, skip, found, hit)) return true;
+          i += std::uint32_t(run);
         }
       }
       // A nearer hit narrows the range (an any-hit walk has returned at its first).
@@ -624,15 +643,15 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
 // baseline instruction set, and the constructor takes this path only where
 // the processor (and the system, for the wide registers' state) has AVX. AVX
 // brings no fused multiply-add, so the arithmetic is the same.
-template <bool AnyHit, bool TrianglePackets>
+template <bool AnyHit, bool Packets>
 #if PRISM_BVH_AVX
 [[gnu::target("avx"), gnu::flatten]]
 #endif
 bool Bvh::walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
 #if PRISM_BVH_AVX
-  return walk<AnyHit, AvxFloatNodeTest, TrianglePackets>(ray, range, skip, hit);
+  return walk<AnyHit, AvxFloatNodeTest, Packets>(ray, range, skip, hit);
 #else
-  return walk<AnyHit, FloatNodeTest, TrianglePackets>(ray, range, skip, hit); // never taken
+  return walk<AnyHit, FloatNodeTest, Packets>(ray, range, skip, hit); // never taken
 #endif
 }
 

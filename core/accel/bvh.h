@@ -9,8 +9,9 @@
 // takes the double test): a box is never missed where a primitive in it is
 // hit, so the nearest hit is the same as brute force, bit for bit.
 // Children are visited nearest first and skipped once they start beyond the
-// nearest hit found. A leaf's runs of triangles are tested up to four at
-// once (core/accel/triangle_packet.h), with the one-triangle test's answers.
+// nearest hit found. A leaf's runs of triangles, or of small polygons, are
+// tested up to four at once (core/accel/packets.h), with the
+// one-primitive tests' answers.
 #pragma once
 
 #include "core/accel/primitive_boxes.h"
@@ -85,11 +86,11 @@ private:
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   // The walk of traverse with a node test of bvh.cpp (single or double
-  // precision), testing a leaf's runs of triangles together or not.
-  template <bool AnyHit, class NodeTest, bool TrianglePackets>
+  // precision), testing a leaf's runs of triangles or polygons together or not.
+  template <bool AnyHit, class NodeTest, bool Packets>
   bool walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   // walk with the single-precision test in one AVX register, compiled for AVX.
-  template <bool AnyHit, bool TrianglePackets>
+  template <bool AnyHit, bool Packets>
   bool walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
@@ -98,7 +99,7 @@ private:
   std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 28 | index (bvh.cpp)
   int depth_ = 0;                   // levels of nodes
   bool avx_ = false;                // one ray's walk takes walkAvx
-  bool triangleRuns_ = false;       // some leaf holds two triangles in a row (bvh.cpp)
+  bool packetRuns_ = false;         // some leaf holds a run its walk tests at once (bvh.cpp)
 };
 
 } // namespace prism

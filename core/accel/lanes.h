@@ -1,5 +1,5 @@
 // Four doubles worked on lane by lane: the hierarchy's tests of several boxes
-// (or several triangles, core/accel/triangle_packet.h) at once. Each lane
+// (or several triangles or polygons, core/accel/packets.h) at once. Each lane
 // sees exactly the IEEE operation a scalar line would do on it (there is no
 // fused multiply-add here), so a test written on lanes answers bit for bit as
 // its scalar form.
@@ -67,6 +67,16 @@ inline Lanes operator&(Lanes a, Lanes b) {
   return {_mm_and_pd(a.lo, b.lo), _mm_and_pd(a.hi, b.hi)};
 }
 inline Lanes operator|(Lanes a, Lanes b) { return {_mm_or_pd(a.lo, b.lo), _mm_or_pd(a.hi, b.hi)}; }
+inline Lanes operator^(Lanes a, Lanes b) {
+  return {_mm_xor_pd(a.lo, b.lo), _mm_xor_pd(a.hi, b.hi)};
+}
+inline Lanes equal(Lanes a, Lanes b) {
+  return {_mm_cmpeq_pd(a.lo, b.lo), _mm_cmpeq_pd(a.hi, b.hi)};
+}
+// ~a & b.
+inline Lanes andNot(Lanes a, Lanes b) {
+  return {_mm_andnot_pd(a.lo, b.lo), _mm_andnot_pd(a.hi, b.hi)};
+}
 inline unsigned bits(Lanes mask) {
   return unsigned(_mm_movemask_pd(mask.lo)) | unsigned(_mm_movemask_pd(mask.hi)) << 2;
 }
@@ -120,6 +130,9 @@ inline Lanes less(Lanes a, Lanes b) { return fromMask(a.v < b.v); }
 inline Lanes notEqual(Lanes a, Lanes b) { return fromMask(a.v != b.v); }
 inline Lanes operator&(Lanes a, Lanes b) { return fromMask(toMask(a) & toMask(b)); }
 inline Lanes operator|(Lanes a, Lanes b) { return fromMask(toMask(a) | toMask(b)); }
+inline Lanes operator^(Lanes a, Lanes b) { return fromMask(toMask(a) ^ toMask(b)); }
+inline Lanes equal(Lanes a, Lanes b) { return fromMask(a.v == b.v); }
+inline Lanes andNot(Lanes a, Lanes b) { return fromMask(~toMask(a) & toMask(b)); }
 inline unsigned bits(Lanes mask) { return maskBits(toMask(mask)); }
 inline void store(double* out, Lanes a) { std::memcpy(out, &a.v, sizeof a.v); }
 inline Lanes load(const double* p) { return {loadLanes<Vec4d>(p)}; }
@@ -140,7 +153,7 @@ struct AvxLanes {
 
   [[gnu::target("avx")]] static AvxLanes splat(double a) { return of(_mm256_set1_pd(a)); }
   [[gnu::target("avx")]] static AvxLanes set(double x0, double x1, double x2, double x3) {
-    return {{x0, x1, x2, x3}};
+    return of(_mm256_set_pd(x3, x2, x1, x0));
   }
   [[gnu::target("avx")]] static AvxLanes of(__m256d v) {
     AvxLanes r;
@@ -175,6 +188,15 @@ struct AvxLanes {
 }
 [[gnu::target("avx")]] inline AvxLanes operator|(AvxLanes a, AvxLanes b) {
   return AvxLanes::of(_mm256_or_pd(a.v(), b.v()));
+}
+[[gnu::target("avx")]] inline AvxLanes operator^(AvxLanes a, AvxLanes b) {
+  return AvxLanes::of(_mm256_xor_pd(a.v(), b.v()));
+}
+[[gnu::target("avx")]] inline AvxLanes equal(AvxLanes a, AvxLanes b) {
+  return AvxLanes::of(_mm256_cmp_pd(a.v(), b.v(), _CMP_EQ_OQ));
+}
+[[gnu::target("avx")]] inline AvxLanes andNot(AvxLanes a, AvxLanes b) {
+  return AvxLanes::of(_mm256_andnot_pd(a.v(), b.v()));
 }
 [[gnu::target("avx")]] inline unsigned bits(AvxLanes mask) {
   return unsigned(_mm256_movemask_pd(mask.v()));

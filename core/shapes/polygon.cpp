@@ -71,6 +71,9 @@ ProjectedAxes polygonAxes(const Polygon& p) {
   return {kProjectedAxes[p.dropAxis][0], kProjectedAxes[p.dropAxis][1]};
 }
 
+// core/accel/packets.h does this arithmetic (the plane, then passesInside)
+// on four polygons of up to four vertices at once and must answer bit for
+// bit as this does: change both together.
 bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* edges,
                const Ray& ray, Interval range, double& t) {
   const double denom = glm::dot(p.normal, ray.dir);

@@ -61,7 +61,7 @@ std::optional<std::string> triangleProblem(const Vec3& a, const Vec3& b, const V
   return std::nullopt;
 }
 
-// core/accel/triangle_packet.h does this arithmetic on four triangles at
+// core/accel/packets.h does this arithmetic on four triangles at
 // once and must answer bit for bit as this does: change both together.
 bool intersect(const Triangle& tri, const Vec3* vertices, const Ray& ray, Interval range,
                double& t) {

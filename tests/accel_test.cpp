@@ -628,6 +628,8 @@ TEST(Accel, BundlesOfRaysMatchBruteForce) {
     scenes.push_back(randomScene(rng, 400, 12));
   scenes.push_back(makeScaledPolygonSoup(2000, 3));
   scenes.push_back(makeSphereflake(400));
+  std::vector<Vec3> corners;
+  scenes.push_back(triangleField(rng, 24, 10.0, Vec3(0.0), corners)); // leaves of triangles
   for (const Scene& scene : scenes) {
     const auto accels = accelerated(scene);
     const auto brute = makeAccel(scene, AccelKind::None);

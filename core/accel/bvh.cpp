@@ -572,6 +572,42 @@ bool Bvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit
   return walk<AnyHit, DoubleNodeTest, false>(ray, range, skip, hit);
 }
 
+// What a walk does in a leaf: its primitives tested in order, runs of them
+// together where the walk packs them.
+template <bool AnyHit, bool Packets, class L>
+bool Bvh::testLeaf(std::uint32_t leaf, const Ray& ray, Interval& range, const PrimitiveRef* skip,
+                   bool& found, Hit* hit, std::optional<PacketTest<L>>& packets) const {
+  const std::uint32_t first = leaf & kFirstMask;
+  const std::uint32_t end = first + ((leaf >> kCountShift) & 0xf) + 1;
+  if constexpr (!Packets) {
+    for (std::uint32_t i = first; i < end; ++i)
+      if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
+        return true;
+    return false;
+  }
+  for (std::uint32_t i = first; i < end;) {
+    const std::uint32_t* at = &refs_[i];
+    double t[4];
+    unsigned hits;
+    int run = runOf(scene_, at, end - i, packsTriangle);
+    if (run >= 2) {
+      if (!packets) packets.emplace(ray);
+      hits = packetHits<Triangle, TriangleCorners>(scene_, *packets, at, run, range, t);
+    } else if (run = runOf(scene_, at, end - i, packsPolygon); run >= 2) {
+      if (!packets) packets.emplace(ray);
+      hits = packetHits<Polygon, PolygonCorners>(scene_, *packets, at, run, range, t);
+    } else {
+      if (testLeafPrimitive<AnyHit>(scene_, decodeRef(*at), ray, range, skip, found, hit))
+        return true;
+      ++i;
+      continue;
+    }
+    if (offerPacketHits<AnyHit>(at, hits, t, range, skip, found, hit)) return true;
+    i += std::uint32_t(run);
+  }
+  return false;
+}
+
 template <bool AnyHit, class NodeTest, bool Packets>
 bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const {
   NodeTest test(ray);
@@ -600,35 +636,8 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
         continue;
       }
     } else {
-      const std::uint32_t first = ref & kFirstMask;
-      const std::uint32_t end = first + ((ref >> kCountShift) & 0xf) + 1;
       const double rangeMax = range.max;
-      if constexpr (!Packets) {
-        for (std::uint32_t i = first; i < end; ++i)
-          if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
-            return true;
-      } else {
-        for (std::uint32_t i = first; i < end;) {
-          const std::uint32_t* at = &refs_[i];
-          double t[4];
-          unsigned hits;
-          int run = runOf(scene_, at, end - i, packsTriangle);
-          if (run >= 2) {
-            if (!packets) packets.emplace(ray);
-            hits = packetHits<Triangle, TriangleCorners>(scene_, *packets, at, run, range, t);
-          } else if (run = runOf(scene_, at, end - i, packsPolygon); run >= 2) {
-            if (!packets) packets.emplace(ray);
-            hits = packetHits<Polygon, PolygonCorners>(scene_, *packets, at, run, range, t);
-          } else {
-            if (testLeafPrimitive<AnyHit>(scene_, decodeRef(*at), ray, range, skip, found, hit))
-              return true;
-            ++i;
-            continue;
-          }
-          if (offerPacketHits<AnyHit>(at, hits, t, range, skip, found, hit)) return true;
-          i += std::uint32_t(run);
-        }
-      }
+      if (testLeaf<AnyHit, Packets>(ref, ray, range, skip, found, hit, packets)) return true;
       // A nearer hit narrows the range (an any-hit walk has returned at its first).
       if constexpr (!AnyHit)
         if (range.max != rangeMax) test.setRangeMax(range.max);
@@ -784,6 +793,8 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
         continue;
       }
     } else {
+      // (Ray by ray with the walk's packets of triangles and polygons, this
+      // was 4% to 20% slower: docs/performance.md.)
       const std::uint32_t begin = current.ref & kFirstMask;
       const std::uint32_t end = begin + ((current.ref >> kCountShift) & 0xf) + 1;
       for (std::uint32_t p = begin; p < end; ++p) {

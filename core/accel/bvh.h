@@ -19,9 +19,12 @@
 #include "core/accel/traversal_accel.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace prism {
+
+template <class L> class PacketTest; // core/accel/packets.h
 
 // Whether `rays` walk a Bvh together in Bvh::closestHits: 2 to
 // Accel::kMaxBundle rays from one origin whose directions have, on each axis,
@@ -92,6 +95,10 @@ private:
   // walk with the single-precision test in one AVX register, compiled for AVX.
   template <bool AnyHit, bool Packets>
   bool walkAvx(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
+  // What walk does in leaf `leaf` (a child reference).
+  template <bool AnyHit, bool Packets, class L>
+  bool testLeaf(std::uint32_t leaf, const Ray& ray, Interval& range, const PrimitiveRef* skip,
+                bool& found, Hit* hit, std::optional<PacketTest<L>>& packets) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   const Scene& scene_;

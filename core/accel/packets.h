@@ -45,7 +45,9 @@ struct TriangleCorners {
   }
 };
 
-// The most vertices a polygon tested in a packet may have.
+// The most vertices a polygon tested in a packet may have: every lane walks
+// as many edges as the largest polygon of its packet has, and larger ones
+// are rare outside the polygons with an edge index, which are never packed.
 inline constexpr std::uint32_t kPacketPolygonVertices = 8;
 
 // Up to four polygons, a lane each as above: the vertices, first[lane][0,

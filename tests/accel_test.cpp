@@ -447,9 +447,9 @@ TEST(Accel, RaysInBoxFacesAlongEdgesAndGrazingPrimitives) {
 // A height field of n x n squares, two mesh triangles each over shared
 // vertices (a ray through an edge or a vertex meets two to six triangles at
 // one t), wavy and tilted, with loose triangles of their own vertices
-// crossing it and a few spheres: leaves of four triangles and more, which
-// the BVH tests several at a time, and leaves of mixed kinds. The corners of
-// the squares are returned, to aim at.
+// crossing it and a few spheres: leaves of several triangles, which the BVH
+// tests together, and leaves of mixed kinds. The corners of the squares are
+// returned, to aim at.
 Scene triangleField(std::mt19937& rng, int n, double size, const Vec3& centre,
                     std::vector<Vec3>& corners) {
   std::uniform_real_distribution<double> u(-1, 1);

@@ -49,6 +49,18 @@ Sphere unitSphereAt(const Vec3& c, double r = 1.0) {
   return s;
 }
 
+// The projection axis of the ray-frame tests: the largest component in
+// size, the first of equals.
+TEST(LargestAbsAxis, LargestInSizeFirstOfEquals) {
+  EXPECT_EQ(largestAbsAxis(Vec3(-3, 2, 1)), 0);
+  EXPECT_EQ(largestAbsAxis(Vec3(0, -2, 1)), 1);
+  EXPECT_EQ(largestAbsAxis(Vec3(0.5, 1, -4)), 2);
+  EXPECT_EQ(largestAbsAxis(Vec3(1, -1, 1)), 0);
+  EXPECT_EQ(largestAbsAxis(Vec3(0, 1, -1)), 1);
+  EXPECT_EQ(largestAbsAxis(Vec3(0, 0, 0)), 0);
+  EXPECT_EQ(largestAbsAxis(Vec3(2, 1, -2)), 0);
+}
+
 TEST(Sphere, HitFromOutsideGivesNearRoot) {
   const Sphere s = unitSphereAt(Vec3(1, 2, 3), 2.0);
   double t = -1;

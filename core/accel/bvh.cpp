@@ -587,21 +587,20 @@ bool Bvh::testLeaf(std::uint32_t leaf, const Ray& ray, Interval& range, const Pr
   }
   for (std::uint32_t i = first; i < end;) {
     const std::uint32_t* at = &refs_[i];
-    double t[4];
-    unsigned hits;
     int run = runOf(scene_, at, end - i, packsTriangle);
-    if (run >= 2) {
-      if (!packets) packets.emplace(ray);
-      hits = packetHits<Triangle, TriangleCorners>(scene_, *packets, at, run, range, t);
-    } else if (run = runOf(scene_, at, end - i, packsPolygon); run >= 2) {
-      if (!packets) packets.emplace(ray);
-      hits = packetHits<Polygon, PolygonCorners>(scene_, *packets, at, run, range, t);
-    } else {
+    const bool triangles = run >= 2;
+    if (!triangles) run = runOf(scene_, at, end - i, packsPolygon);
+    if (run < 2) {
       if (testLeafPrimitive<AnyHit>(scene_, decodeRef(*at), ray, range, skip, found, hit))
         return true;
       ++i;
       continue;
     }
+    if (!packets) packets.emplace(ray);
+    double t[4];
+    const unsigned hits =
+        triangles ? packetHits<Triangle, TriangleCorners>(scene_, *packets, at, run, range, t)
+                  : packetHits<Polygon, PolygonCorners>(scene_, *packets, at, run, range, t);
     if (offerPacketHits<AnyHit>(at, hits, t, range, skip, found, hit)) return true;
     i += std::uint32_t(run);
   }

@@ -55,7 +55,7 @@ inline Lanes operator/(Lanes a, Lanes b) {
 // a > b ? a : b and a < b ? a : b lane by lane: b wherever either is a NaN.
 inline Lanes maxOr(Lanes a, Lanes b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
 inline Lanes minOr(Lanes a, Lanes b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
-// Comparisons, false where either is a NaN (except ne, true there).
+// Comparisons, false where either is a NaN (notEqual: true there).
 inline Lanes lessEqual(Lanes a, Lanes b) {
   return {_mm_cmple_pd(a.lo, b.lo), _mm_cmple_pd(a.hi, b.hi)};
 }

@@ -78,9 +78,7 @@ struct PolygonCorners {
 template <class L> class PacketTest {
 public:
   explicit PacketTest(const Ray& ray) {
-    // The axis of d's largest component, chosen as the scalar tests do.
-    const Vec3 m = glm::abs(ray.dir);
-    axis_ = m.x >= m.y ? (m.x >= m.z ? 0 : 2) : (m.y >= m.z ? 1 : 2);
+    axis_ = largestAbsAxis(ray.dir); // as the scalar tests choose it
     for (int a = 0; a < 3; ++a) {
       origin_[a] = L::splat(ray.origin[a]);
       dir_[a] = L::splat(ray.dir[a]);
@@ -189,8 +187,8 @@ private:
       const L straddles = less(zero, ay) ^ less(zero, by);
       const L e = ax * by - ay * bx;
       // straddles & (e == 0 | (e > 0) == (by > ay))
-      const L sameSide = less(zero, e) ^ less(ay, by); // all ones where they differ
-      inside = inside ^ ((straddles & lanes::equal(e, zero)) | lanes::andNot(sameSide, straddles));
+      const L disagree = less(zero, e) ^ less(ay, by);
+      inside = inside ^ ((straddles & lanes::equal(e, zero)) | lanes::andNot(disagree, straddles));
       ax = bx;
       ay = by;
     }

@@ -35,6 +35,15 @@ inline double maxAbsComponent(const Vec3& v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
+// The axis (0, 1, 2) of v's largest component in size, the first of equal
+// ones. The ray-frame tests of triangles and polygons project along the
+// ray direction's: one rule for the scalar tests and the BVH's packets, so
+// they answer alike.
+inline int largestAbsAxis(const Vec3& v) {
+  const Vec3 m = glm::abs(v);
+  return m.x >= m.y ? (m.x >= m.z ? 0 : 2) : (m.y >= m.z ? 1 : 2);
+}
+
 inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }

@@ -83,11 +83,10 @@ bool intersect(const Polygon& p, const Vec3* vertices, const PolygonEdgeIndex* e
   const Vec3* v = vertices + p.firstVertex;
   bool inside = false;
   if (p.rayFrameTest) {
-    const Vec3 m = glm::abs(ray.dir);
-    inside = m.x >= m.y ? (m.x >= m.z ? passesInside<0>(v, p.vertexCount, ray)
-                                      : passesInside<2>(v, p.vertexCount, ray))
-                        : (m.y >= m.z ? passesInside<1>(v, p.vertexCount, ray)
-                                      : passesInside<2>(v, p.vertexCount, ray));
+    const int kz = largestAbsAxis(ray.dir);
+    inside = kz == 0   ? passesInside<0>(v, p.vertexCount, ray)
+             : kz == 1 ? passesInside<1>(v, p.vertexCount, ray)
+                       : passesInside<2>(v, p.vertexCount, ray);
   } else {
     // A polygon of many vertices, or one whose vertices lie off its plane:
     // the crossing-number test in the plane's own projection, of the point

@@ -68,10 +68,10 @@ bool intersect(const Triangle& tri, const Vec3* vertices, const Ray& ray, Interv
   const Vec3& a = vertices[tri.vertex[0]];
   const Vec3& b = vertices[tri.vertex[1]];
   const Vec3& c = vertices[tri.vertex[2]];
-  const Vec3 m = glm::abs(ray.dir);
-  const bool inside =
-      m.x >= m.y ? (m.x >= m.z ? passesInside<0>(a, b, c, ray) : passesInside<2>(a, b, c, ray))
-                 : (m.y >= m.z ? passesInside<1>(a, b, c, ray) : passesInside<2>(a, b, c, ray));
+  const int kz = largestAbsAxis(ray.dir);
+  const bool inside = kz == 0   ? passesInside<0>(a, b, c, ray)
+                      : kz == 1 ? passesInside<1>(a, b, c, ray)
+                                : passesInside<2>(a, b, c, ray);
   if (!inside) return false;
   const Vec3 n = glm::cross(b - a, c - a);
   const double denom = glm::dot(n, ray.dir);

@@ -9,6 +9,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -143,19 +144,50 @@ private:
 //    scaling by 1 - 2^-20 moves an entry down and 1 + 2^-20 an exit up; an
 //    exit that overflows float is infinite, and one of FLT_MAX becomes so.
 // Rays that it cannot take (suits) use DoubleNodeTest.
-class FloatNodeTest {
-public:
-  using Time = float;
-  using PacketLanes = Lanes;
-  // Whether the float test can take `ray` over `range`: the range starts at 0
-  // or later; the origin's coordinates are within 2^100 and each direction
+// The per-ray values of the float tests: the origins moved by the slack
+// (above) and rounded, 1/d rounded, and where in a node each axis's near and
+// far bounds are (byte offsets of rows of Node::bounds).
+struct FloatRay {
+  float nearOrigin[3], farOrigin[3], inv[3];
+  std::size_t nearOffset[3], farOffset[3];
+
+  // Whether the float tests can take `ray` over `range`: the range starts at
+  // 0 or later; the origin's coordinates are within 2^100 and each direction
   // component is 0 or of a size from 2^-100 to 2^100, so that 1/d is finite
   // and not 0 in float (or infinite, exactly where double's is).
   // Such a ray is finite: a NaN fails every comparison here.
   static bool suits(const Ray& ray, Interval range);
+  explicit FloatRay(const Ray& ray);
+};
 
-  // The origins moved by the slack (above) and rounded, 1/d and the rows.
-  explicit FloatNodeTest(const Ray& ray);
+// Row `offset` bytes into a node's bounds.
+inline const float* boundsRow(const Bvh::Node& node, std::size_t offset) {
+  return reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(node.bounds) +
+                                        offset);
+}
+
+// The widening of entries and exits (above).
+constexpr float kWidenDown = 1.0f - 0x1p-20f;
+constexpr float kWidenUp = 1.0f + 0x1p-20f;
+constexpr float kWidenTiny = 0x1p-140f;
+
+class FloatNodeTest {
+public:
+  using Time = float;
+  using PacketLanes = Lanes;
+  static bool suits(const Ray& ray, Interval range) { return FloatRay::suits(ray, range); }
+
+  explicit FloatNodeTest(const Ray& ray) {
+    const FloatRay f(ray);
+    for (int a = 0; a < 3; ++a) {
+      nearOrigin_[a] = broadcastF(f.nearOrigin[a]);
+      farOrigin_[a] = broadcastF(f.farOrigin[a]);
+      inv_[a] = broadcastF(f.inv[a]);
+      nearOffset_[a] = f.nearOffset[a];
+      farOffset_[a] = f.farOffset[a];
+    }
+    asm("" : "+x"(widenDown_), "+x"(widenUp_), "+x"(widenTiny_));
+  }
 
   void setRange(Interval range) {
     rangeMin_ = broadcastF(float(range.min));
@@ -170,8 +202,10 @@ public:
       LanesF tNear = rangeMin_;
       LanesF tFar = rangeMax_;
       for (int a = 0; a < 3; ++a) {
-        const LanesF t0 = mulF(subF(loadF(node.bounds[nearRow_[a]] + h), nearOrigin_[a]), inv_[a]);
-        const LanesF t1 = mulF(subF(loadF(node.bounds[farRow_[a]] + h), farOrigin_[a]), inv_[a]);
+        const LanesF t0 =
+            mulF(subF(loadF(boundsRow(node, nearOffset_[a]) + h), nearOrigin_[a]), inv_[a]);
+        const LanesF t1 =
+            mulF(subF(loadF(boundsRow(node, farOffset_[a]) + h), farOrigin_[a]), inv_[a]);
         tNear = maxOrF(t0, tNear); // a NaN leaves the range unchanged, as above
         tFar = minOrF(t1, tFar);
       }
@@ -183,18 +217,17 @@ public:
     return mask;
   }
 
-protected:
+private:
   LanesF nearOrigin_[3]; // see slackOrigin
   LanesF farOrigin_[3];
   LanesF inv_[3];
   LanesF rangeMin_, rangeMax_;
-  // The widening of entries and exits (above). Hidden from the optimiser
-  // (ctor), which would otherwise splat each constant anew at every node.
-  LanesF widenDown_ = broadcastF(1.0f - 0x1p-20f);
-  LanesF widenUp_ = broadcastF(1.0f + 0x1p-20f);
-  LanesF widenTiny_ = broadcastF(0x1p-140f);
-  int nearRow_[3];
-  int farRow_[3];
+  // Hidden from the optimiser (ctor), which would otherwise splat each
+  // constant anew at every node.
+  LanesF widenDown_ = broadcastF(kWidenDown);
+  LanesF widenUp_ = broadcastF(kWidenUp);
+  LanesF widenTiny_ = broadcastF(kWidenTiny);
+  std::size_t nearOffset_[3], farOffset_[3];
 };
 
 constexpr double kFloatTestLimit = 0x1p100; // of FloatNodeTest::suits
@@ -222,7 +255,7 @@ unsigned maskPair(__m128d xy, __m128d z0) {
   return unsigned(_mm_movemask_pd(xy)) | unsigned(_mm_movemask_pd(z0)) << 2;
 }
 
-inline bool FloatNodeTest::suits(const Ray& ray, Interval range) {
+inline bool FloatRay::suits(const Ray& ray, Interval range) {
   const Pair o = absPair(loadPair(ray.origin)), d = absPair(loadPair(ray.dir));
   const __m128d limit = _mm_set1_pd(kFloatTestLimit), least = _mm_set1_pd(1.0 / kFloatTestLimit);
   const __m128d zero = _mm_setzero_pd();
@@ -234,7 +267,7 @@ inline bool FloatNodeTest::suits(const Ray& ray, Interval range) {
   return range.min >= 0.0 && maskPair(fits(o.xy, d.xy), fits(o.z0, d.z0)) == 0xf;
 }
 
-inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
+inline FloatRay::FloatRay(const Ray& ray) {
   const Pair o = loadPair(ray.origin), d = loadPair(ray.dir);
   const Pair absO = absPair(o);
   const __m128d largest2 = _mm_max_pd(absO.xy, absO.z0); // (max |x|,|z|; |y|)
@@ -247,30 +280,26 @@ inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
   const __m128d sign = _mm_set1_pd(-0.0);
   auto toward = [&](__m128d dLanes) { return _mm_or_pd(_mm_and_pd(dLanes, sign), slack); };
   const __m128d one = _mm_set1_pd(1.0);
-  const __m128 nearXY = _mm_cvtpd_ps(_mm_add_pd(o.xy, toward(d.xy)));
-  const __m128 farXY = _mm_cvtpd_ps(_mm_sub_pd(o.xy, toward(d.xy)));
-  const __m128 invXY = _mm_cvtpd_ps(_mm_div_pd(one, d.xy));
-  const __m128 nearZ = _mm_cvtpd_ps(_mm_add_pd(o.z0, toward(d.z0)));
-  const __m128 farZ = _mm_cvtpd_ps(_mm_sub_pd(o.z0, toward(d.z0)));
-  const __m128 invZ = _mm_cvtpd_ps(_mm_div_sd(one, d.z0));
-  nearOrigin_[0] = _mm_shuffle_ps(nearXY, nearXY, 0x00);
-  nearOrigin_[1] = _mm_shuffle_ps(nearXY, nearXY, 0x55);
-  nearOrigin_[2] = _mm_shuffle_ps(nearZ, nearZ, 0x00);
-  farOrigin_[0] = _mm_shuffle_ps(farXY, farXY, 0x00);
-  farOrigin_[1] = _mm_shuffle_ps(farXY, farXY, 0x55);
-  farOrigin_[2] = _mm_shuffle_ps(farZ, farZ, 0x00);
-  inv_[0] = _mm_shuffle_ps(invXY, invXY, 0x00);
-  inv_[1] = _mm_shuffle_ps(invXY, invXY, 0x55);
-  inv_[2] = _mm_shuffle_ps(invZ, invZ, 0x00);
+  // x and y as a pair of floats (_mm_storel_pi), z alone.
+  auto storeXY = [](float* out, __m128d xy) {
+    _mm_storel_pi(reinterpret_cast<__m64*>(out), _mm_cvtpd_ps(xy));
+  };
+  auto storeZ = [](float* out, __m128d z) { _mm_store_ss(out + 2, _mm_cvtpd_ps(z)); };
+  storeXY(nearOrigin, _mm_add_pd(o.xy, toward(d.xy)));
+  storeXY(farOrigin, _mm_sub_pd(o.xy, toward(d.xy)));
+  storeXY(inv, _mm_div_pd(one, d.xy));
+  storeZ(nearOrigin, _mm_add_sd(o.z0, toward(d.z0)));
+  storeZ(farOrigin, _mm_sub_sd(o.z0, toward(d.z0)));
+  storeZ(inv, _mm_div_sd(one, d.z0));
   const unsigned negative = maskPair(d.xy, d.z0);
   for (int a = 0; a < 3; ++a) {
-    nearRow_[a] = 2 * a + int(negative >> a & 1u);
-    farRow_[a] = 2 * a + 1 - int(negative >> a & 1u);
+    const std::size_t bit = negative >> a & 1u;
+    nearOffset[a] = (2 * std::size_t(a) + bit) * sizeof(Bvh::Node::bounds[0]);
+    farOffset[a] = (2 * std::size_t(a) + 1 - bit) * sizeof(Bvh::Node::bounds[0]);
   }
-  asm("" : "+x"(widenDown_), "+x"(widenUp_), "+x"(widenTiny_));
 }
 #else
-inline bool FloatNodeTest::suits(const Ray& ray, Interval range) {
+inline bool FloatRay::suits(const Ray& ray, Interval range) {
   bool fits = range.min >= 0.0;
   for (int a = 0; a < 3; ++a) {
     const double d = std::abs(ray.dir[a]);
@@ -280,53 +309,73 @@ inline bool FloatNodeTest::suits(const Ray& ray, Interval range) {
   return fits;
 }
 
-inline FloatNodeTest::FloatNodeTest(const Ray& ray) {
+inline FloatRay::FloatRay(const Ray& ray) {
   const double slack = kFloatSlackPerCoordinate * maxAbsComponent(ray.origin) + kFloatSlackFloor;
   for (int a = 0; a < 3; ++a) {
     // (signbit: a zero component's 1/d is an infinity of its sign.)
     const bool negative = std::signbit(ray.dir[a]);
     const SlackOrigin o = slackOrigin(ray.origin[a], negative ? -1.0 : 1.0, slack);
-    nearOrigin_[a] = broadcastF(float(o.near));
-    farOrigin_[a] = broadcastF(float(o.far));
-    inv_[a] = broadcastF(float(1.0 / ray.dir[a]));
-    nearRow_[a] = 2 * a + (negative ? 1 : 0);
-    farRow_[a] = 2 * a + (negative ? 0 : 1);
+    nearOrigin[a] = float(o.near);
+    farOrigin[a] = float(o.far);
+    inv[a] = float(1.0 / ray.dir[a]);
+    const std::size_t bit = negative ? 1 : 0;
+    nearOffset[a] = (2 * std::size_t(a) + bit) * sizeof(Bvh::Node::bounds[0]);
+    farOffset[a] = (2 * std::size_t(a) + 1 - bit) * sizeof(Bvh::Node::bounds[0]);
   }
 }
 #endif
 
 #if PRISM_BVH_AVX
-// FloatNodeTest's arithmetic on all eight boxes in one AVX register, each
-// per-ray value of the SSE test's lanes duplicated into both halves: the same
-// operations in the same order on each box, so the same answers. Only code
-// compiled for AVX may call meet (Bvh::walkAvx).
-class AvxFloatNodeTest : public FloatNodeTest {
+// FloatNodeTest's arithmetic on all eight boxes in one AVX register: the
+// same per-ray values (FloatRay) and the same operations in the same order on
+// each box, so the same answers. Only code compiled for AVX may use it
+// (Bvh::walkAvx).
+class AvxFloatNodeTest {
 public:
-  using FloatNodeTest::FloatNodeTest;
+  using Time = float;
   using PacketLanes = AvxLanes; // the walk is compiled for AVX
 
+  [[gnu::target("avx")]] explicit AvxFloatNodeTest(const Ray& ray) {
+    const FloatRay f(ray);
+    for (int a = 0; a < 3; ++a) {
+      nearOrigin_[a] = _mm256_broadcast_ss(&f.nearOrigin[a]);
+      farOrigin_[a] = _mm256_broadcast_ss(&f.farOrigin[a]);
+      inv_[a] = _mm256_broadcast_ss(&f.inv[a]);
+      nearOffset_[a] = f.nearOffset[a];
+      farOffset_[a] = f.farOffset[a];
+    }
+  }
+
+  [[gnu::target("avx")]] void setRange(Interval range) {
+    rangeMinWide_ = _mm256_set1_ps(float(range.min));
+    setRangeMax(range.max);
+  }
+  [[gnu::target("avx")]] void setRangeMax(double max) {
+    rangeMaxWide_ = _mm256_set1_ps(float(max));
+  }
+
   [[gnu::target("avx")]] unsigned meet(const Bvh::Node& node, float (&tEnter)[Bvh::kWidth]) const {
-    __m256 tNear = wide(rangeMin_);
-    __m256 tFar = wide(rangeMax_);
+    __m256 tNear = rangeMinWide_;
+    __m256 tFar = rangeMaxWide_;
     for (int a = 0; a < 3; ++a) {
       const __m256 t0 = _mm256_mul_ps(
-          _mm256_sub_ps(_mm256_load_ps(node.bounds[nearRow_[a]]), wide(nearOrigin_[a])),
-          wide(inv_[a]));
-      const __m256 t1 =
-          _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[farRow_[a]]), wide(farOrigin_[a])),
-                        wide(inv_[a]));
+          _mm256_sub_ps(_mm256_load_ps(boundsRow(node, nearOffset_[a])), nearOrigin_[a]), inv_[a]);
+      const __m256 t1 = _mm256_mul_ps(
+          _mm256_sub_ps(_mm256_load_ps(boundsRow(node, farOffset_[a])), farOrigin_[a]), inv_[a]);
       tNear = _mm256_max_ps(t0, tNear); // maxps and minps as in the SSE test
       tFar = _mm256_min_ps(t1, tFar);
     }
-    tNear = _mm256_sub_ps(_mm256_mul_ps(tNear, wide(widenDown_)), wide(widenTiny_));
-    tFar = _mm256_add_ps(_mm256_mul_ps(tFar, wide(widenUp_)), wide(widenTiny_));
+    tNear =
+        _mm256_sub_ps(_mm256_mul_ps(tNear, _mm256_set1_ps(kWidenDown)), _mm256_set1_ps(kWidenTiny));
+    tFar = _mm256_add_ps(_mm256_mul_ps(tFar, _mm256_set1_ps(kWidenUp)), _mm256_set1_ps(kWidenTiny));
     _mm256_storeu_ps(tEnter, tNear);
     return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(tNear, tFar, _CMP_LE_OQ)));
   }
 
 private:
-  // Four lanes of the SSE test, twice.
-  [[gnu::target("avx")]] static __m256 wide(const LanesF& v) { return _mm256_broadcast_ps(&v); }
+  __m256 nearOrigin_[3], farOrigin_[3], inv_[3];
+  __m256 rangeMinWide_, rangeMaxWide_;
+  std::size_t nearOffset_[3], farOffset_[3];
 };
 #endif
 
@@ -393,9 +442,9 @@ template <class Entry> class TraversalStack {
 public:
   explicit TraversalStack(int treeDepth) {
     if (const std::size_t need = std::size_t(Bvh::kWidth - 1) * std::size_t(treeDepth) + 1;
-        need > kLocalStack) {
-      heap_.resize(need);
-      entries_ = heap_.data();
+        need > kLocalStack) [[unlikely]] {
+      heap_ = std::make_unique<Entry[]>(need);
+      entries_ = heap_.get();
     }
   }
 
@@ -410,6 +459,8 @@ public:
     return children[0];
   }
 
+  void push(const Entry& entry) { entries_[top_++] = entry; }
+
   // The nearest waiting child that starts at or before `limit` (at exactly it
   // too, for the tie-break of keepNearest); the others are dropped on the way.
   bool pop(double limit, Entry& next) {
@@ -422,7 +473,7 @@ public:
 
 private:
   Entry local_[kLocalStack];
-  std::vector<Entry> heap_; // only for trees deeper than the local stack allows
+  std::unique_ptr<Entry[]> heap_; // only for trees deeper than the local stack allows
   Entry* entries_ = local_;
   std::size_t top_ = 0;
 };
@@ -625,12 +676,42 @@ bool Bvh::walk(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hi
     if ((ref & kLeafBit) == 0) {
       const Node& node = nodes_[ref];
       typename NodeTest::Time tEnter[kWidth];
-      const unsigned hitMask = test.meet(node, tEnter);
-      Entry hits[kWidth];
-      int n = 0;
-      for (int i = 0; i < kWidth; ++i)
-        if ((hitMask >> i) & 1u) hits[n++] = {node.child[i], tEnter[i]};
-      if (n > 0) {
+      unsigned hitMask = test.meet(node, tEnter);
+      if (hitMask != 0) {
+        // Most nodes are met in one or two children: those go without the
+        // sort, in the order it would give (the lower index first on a tie).
+        const int a = std::countr_zero(hitMask);
+        hitMask &= hitMask - 1;
+        if (hitMask == 0) {
+          current = {node.child[a], tEnter[a]};
+          continue;
+        }
+        if constexpr (AnyHit) {
+          // Any blocker ends the walk, so there is no order to keep: the
+          // children go in index order, unsorted (the range never narrows,
+          // so none is dropped before it is visited).
+          for (; hitMask != 0; hitMask &= hitMask - 1) {
+            const int i = std::countr_zero(hitMask);
+            stack.push({node.child[i], tEnter[i]});
+          }
+          current = {node.child[a], tEnter[a]};
+          continue;
+        }
+        const int b = std::countr_zero(hitMask);
+        hitMask &= hitMask - 1;
+        if (hitMask == 0) {
+          const bool bFirst = tEnter[b] < tEnter[a];
+          const int nearer = bFirst ? b : a, farther = bFirst ? a : b;
+          stack.push({node.child[farther], tEnter[farther]});
+          current = {node.child[nearer], tEnter[nearer]};
+          continue;
+        }
+        Entry hits[kWidth] = {{node.child[a], tEnter[a]}, {node.child[b], tEnter[b]}};
+        int n = 2;
+        for (; hitMask != 0; hitMask &= hitMask - 1) {
+          const int i = std::countr_zero(hitMask);
+          hits[n++] = {node.child[i], tEnter[i]};
+        }
         current = stack.pushAllButNearest(hits, n);
         continue;
       }

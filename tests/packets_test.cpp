@@ -19,6 +19,8 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <span>
+#include <type_traits>
 #include <vector>
 
 namespace prism {
@@ -63,11 +65,38 @@ template <class Kind, class Corners> struct ShapeSet {
     a.polygonVertices = vertices; // of polygons
     return a;
   }
-  Corners packet(const std::array<std::size_t, 4>& which) const {
-    Corners c;
-    for (int lane = 0; lane < 4; ++lane)
-      c.set(lane, shapes[which[std::size_t(lane)]], arrays());
-    return c;
+  // The data a hierarchy stores for a packet of the shapes which[0, count),
+  // followed by values no lane may be influenced by (a lane past `count`
+  // reads them).
+  struct Packet {
+    std::vector<double> data;
+    std::uint32_t stride = 0;
+    std::uint32_t vertices = 0; // of polygons
+
+    Corners corners() const {
+      if constexpr (std::is_same_v<Corners, TriangleCorners>) {
+        return {data.data(), stride};
+      } else {
+        return {data.data(), stride, vertices};
+      }
+    }
+  };
+  Packet packet(const std::array<std::size_t, 4>& which, int count) const {
+    const Kind* lanes[4];
+    for (int lane = 0; lane < count; ++lane)
+      lanes[lane] = &shapes[which[std::size_t(lane)]];
+    Packet p;
+    p.stride = std::uint32_t(count);
+    const std::span<const Kind* const> used(lanes, std::size_t(count));
+    if constexpr (std::is_same_v<Kind, Triangle>) {
+      appendPacket(used, arrays(), p.data);
+    } else {
+      p.vertices = appendPacket(used, arrays(), p.data);
+    }
+    static_assert(kPacketPadding == 3);
+    const double inf = std::numeric_limits<double>::infinity();
+    p.data.insert(p.data.end(), {std::numeric_limits<double>::quiet_NaN(), inf, -1e300});
+    return p;
   }
   bool scalar(std::size_t i, const Ray& ray, Interval range, double& t) const {
     return intersect(shapes[i], arrays(), ray, range, t);
@@ -108,7 +137,8 @@ struct Counts {
 };
 
 // A packet of 1 to 4 of the set's shapes, the ray's target `aimed` and its
-// neighbours in the list or others (lanes past the count repeat the first),
+// neighbours in the list or others (stored as a hierarchy stores a packet of that
+// many: lanes past the count read other values),
 // each lane's answer against the scalar test's.
 template <class Set>
 void expectLanesMatchScalar(const Set& set, std::size_t aimed, const Ray& ray, Interval range,
@@ -121,7 +151,8 @@ void expectLanesMatchScalar(const Set& set, std::size_t aimed, const Ray& ray, I
   std::array<std::size_t, 4> which{};
   for (int lane = 0; lane < 4; ++lane)
     which[std::size_t(lane)] = lane < count ? near[lane] % size : which[0];
-  const auto corners = set.packet(which);
+  const auto packet = set.packet(which, count);
+  const auto corners = packet.corners();
   const unsigned used = (1u << count) - 1;
   std::vector<Answer> answers{sseHits(ray, corners, used, range)};
 #if PRISM_BVH_AVX
@@ -293,18 +324,18 @@ TEST(TrianglePacket, NonFiniteRaysHitNothing) {
                       {Vec3(0.2, 0.2, inf), Vec3(0, 0, -1)}};
   const std::array<std::size_t, 4> same{0, 0, 0, 0};
   for (const Ray& ray : rays) {
-    EXPECT_EQ(sseHits(ray, set.packet(same), 0xf, Interval{}).hits, 0u);
-    EXPECT_EQ(sseHits(ray, polygons.packet(same), 0xf, Interval{}).hits, 0u);
+    EXPECT_EQ(sseHits(ray, set.packet(same, 4).corners(), 0xf, Interval{}).hits, 0u);
+    EXPECT_EQ(sseHits(ray, polygons.packet(same, 4).corners(), 0xf, Interval{}).hits, 0u);
 #if PRISM_BVH_AVX
     if (hasAvx()) {
-      EXPECT_EQ(avxHits(ray, set.packet(same), 0xf, Interval{}).hits, 0u);
-      EXPECT_EQ(avxHits(ray, polygons.packet(same), 0xf, Interval{}).hits, 0u);
+      EXPECT_EQ(avxHits(ray, set.packet(same, 4).corners(), 0xf, Interval{}).hits, 0u);
+      EXPECT_EQ(avxHits(ray, polygons.packet(same, 4).corners(), 0xf, Interval{}).hits, 0u);
     }
 #endif
   }
   const Ray finite{Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)};
-  EXPECT_EQ(sseHits(finite, set.packet(same), 0xf, Interval{}).hits, 0xfu);
-  EXPECT_EQ(sseHits(finite, polygons.packet(same), 0xf, Interval{}).hits, 0xfu);
+  EXPECT_EQ(sseHits(finite, set.packet(same, 4).corners(), 0xf, Interval{}).hits, 0xfu);
+  EXPECT_EQ(sseHits(finite, polygons.packet(same, 4).corners(), 0xf, Interval{}).hits, 0xfu);
 }
 
 } // namespace

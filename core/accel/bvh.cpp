@@ -54,6 +54,13 @@ static_assert(kShapeKindCount <= (1u << (32 - kKindShift)),
 // than a leaf can address (Bvh::kFirstMask), fewer than the index bits hold.
 static_assert(Bvh::kFirstMask <= kIndexMask, "a primitive's index must fit the packed reference");
 
+// The most references a hierarchy holds, each with the most data a packet's
+// lane takes (a polygon of kPacketPolygonVertices), fit PacketRun::data.
+static_assert((std::uint64_t(Bvh::kFirstMask) + 1) * (4 + 3 * kPacketPolygonVertices) +
+                      kPacketPadding <=
+                  std::uint64_t(UINT32_MAX),
+              "packet data offsets must fit 32 bits");
+
 inline PrimitiveRef decodeRef(std::uint32_t code) {
   return {PrimitiveKind(code >> kKindShift), code & kIndexMask};
 }
@@ -379,10 +386,11 @@ private:
 };
 #endif
 
-// Leaves' runs of two to four triangles, or of two to four polygons of up to
+// Leaves' runs of up to four triangles, or of up to four polygons of up to
 // kPacketPolygonVertices vertices tested in the ray's frame, are tested at once
-// (core/accel/packets.h). A run's length, from refs[0] on (at most
-// `left`): up to 4 references of one such kind.
+// (core/accel/packets.h); a run of one too, since the packet test, with its
+// data stored in leaf order, costs less than the scalar one. A run's length,
+// from refs[0] on (at most `left`): up to 4 references of one such kind.
 bool packsTriangle(const Scene&, std::uint32_t code) {
   return code >> kKindShift == std::uint32_t(kindOf<Triangle>);
 }
@@ -397,19 +405,6 @@ int runOf(const Scene& scene, const std::uint32_t* refs, std::uint32_t left, Pac
   while (run < 4 && std::uint32_t(run) < left && packs(scene, refs[run]))
     ++run;
   return run;
-}
-
-// The packet test of the `count` shapes refs[0, count), all of `Kind`
-// (Triangle with TriangleCorners, Polygon with PolygonCorners): hits as
-// bits, at t.
-template <class Kind, class Corners, class L>
-unsigned packetHits(const Scene& scene, const PacketTest<L>& test, const std::uint32_t* refs,
-                    int count, Interval range, double (&t)[4]) {
-  const Kind* shapes = scene.shapes<Kind>().data();
-  Corners corners;
-  for (int lane = 0; lane < 4; ++lane)
-    corners.set(lane, shapes[refs[lane < count ? lane : 0] & kIndexMask], scene.arrays());
-  return test.hits(corners, (1u << count) - 1, range, t);
 }
 
 // What testLeafPrimitive does with each of a packet's primitives in turn,
@@ -508,10 +503,13 @@ Bvh::Bvh(const Scene& scene, Options options) : scene_(scene) {
   // there are primitives, and within the memory bound (see Options).
   build(hierarchyBoxes(scene, std::min(primitiveCount / 2, kFirstMask - primitiveCount)));
   if (options.maxBytesPerPrimitive > 0 && referenceCount() > primitiveCount &&
-      memoryBytes() > options.maxBytesPerPrimitive * primitiveCount) {
+      hierarchyBytes() > options.maxBytesPerPrimitive * primitiveCount) {
     nodes_.clear();
     refs_.clear();
+    runs_.clear();
+    packetData_.clear();
     depth_ = 0;
+    packetRuns_ = false;
     build(hierarchyBoxes(scene, 0));
   }
 }
@@ -531,6 +529,11 @@ void Bvh::build(const std::vector<BoxedPrimitive>& boxed) {
   nodes_.reserve(tree.nodes.size() / 14 + 1);
   BuildContext context{tree, boxed};
   collapse(context, 0, 1);
+  if (packetRuns_) {
+    packetData_.resize(packetData_.size() + kPacketPadding, 0.0);
+  } else {
+    runs_ = {};
+  }
 }
 
 // Appends binary leaf `n`'s primitives to refs_, each once (two slices of one
@@ -543,9 +546,36 @@ std::uint32_t Bvh::emitLeaf(const BuildContext& context, const SahTree::Node& n)
     if (std::find(refs_.begin() + first, refs_.end(), code) == refs_.end()) refs_.push_back(code);
   }
   const auto count = std::uint32_t(refs_.size()) - first;
-  for (std::uint32_t i = first; i + 1 < first + count; ++i)
-    packetRuns_ |= runOf(scene_, &refs_[i], 2, packsTriangle) == 2 ||
-                   runOf(scene_, &refs_[i], 2, packsPolygon) == 2;
+  // The runs, greedily from the first reference on: triangles before polygons.
+  runs_.resize(refs_.size());
+  const std::uint32_t end = first + count;
+  for (std::uint32_t i = first; i < end;) {
+    const std::uint32_t* at = &refs_[i];
+    int run = runOf(scene_, at, end - i, packsTriangle);
+    const bool triangles = run >= 1;
+    if (!triangles) run = runOf(scene_, at, end - i, packsPolygon);
+    if (run == 0) {
+      ++i;
+      continue;
+    }
+    PacketRun& r = runs_[i];
+    r.data = std::uint32_t(packetData_.size()); // (fits: kPacketDataLimit)
+    r.length = std::uint8_t(run);
+    if (triangles) {
+      const Triangle* shapes[4];
+      for (int k = 0; k < run; ++k)
+        shapes[k] = &scene_.shapes<Triangle>()[at[k] & kIndexMask];
+      appendPacket(std::span(shapes, std::size_t(run)), scene_.arrays(), packetData_);
+    } else {
+      const Polygon* shapes[4];
+      for (int k = 0; k < run; ++k)
+        shapes[k] = &scene_.shapes<Polygon>()[at[k] & kIndexMask];
+      r.polygonVertices = std::uint8_t(
+          appendPacket(std::span(shapes, std::size_t(run)), scene_.arrays(), packetData_));
+    }
+    packetRuns_ = true;
+    i += std::uint32_t(run);
+  }
   return kLeafBit | (count - 1) << kCountShift | first;
 }
 
@@ -637,23 +667,23 @@ bool Bvh::testLeaf(std::uint32_t leaf, const Ray& ray, Interval& range, const Pr
     return false;
   }
   for (std::uint32_t i = first; i < end;) {
-    const std::uint32_t* at = &refs_[i];
-    int run = runOf(scene_, at, end - i, packsTriangle);
-    const bool triangles = run >= 2;
-    if (!triangles) run = runOf(scene_, at, end - i, packsPolygon);
-    if (run < 2) {
-      if (testLeafPrimitive<AnyHit>(scene_, decodeRef(*at), ray, range, skip, found, hit))
+    const PacketRun run = runs_[i];
+    if (run.length == 0) {
+      if (testLeafPrimitive<AnyHit>(scene_, decodeRef(refs_[i]), ray, range, skip, found, hit))
         return true;
       ++i;
       continue;
     }
     if (!packets) packets.emplace(ray);
+    const double* data = &packetData_[run.data];
+    const unsigned used = (1u << run.length) - 1;
     double t[4];
     const unsigned hits =
-        triangles ? packetHits<Triangle, TriangleCorners>(scene_, *packets, at, run, range, t)
-                  : packetHits<Polygon, PolygonCorners>(scene_, *packets, at, run, range, t);
-    if (offerPacketHits<AnyHit>(at, hits, t, range, skip, found, hit)) return true;
-    i += std::uint32_t(run);
+        run.polygonVertices == 0
+            ? packets->hits(TriangleCorners{data, run.length}, used, range, t)
+            : packets->hits(PolygonCorners{data, run.length, run.polygonVertices}, used, range, t);
+    if (offerPacketHits<AnyHit>(&refs_[i], hits, t, range, skip, found, hit)) return true;
+    i += run.length;
   }
   return false;
 }
@@ -925,8 +955,12 @@ std::uint64_t Bvh::closestHits(std::span<const Ray> rays, std::span<Hit> hits) c
 template bool Bvh::traverse<false>(const Ray&, Interval, const PrimitiveRef*, Hit*) const;
 template bool Bvh::traverse<true>(const Ray&, Interval, const PrimitiveRef*, Hit*) const;
 
-std::size_t Bvh::memoryBytes() const {
+std::size_t Bvh::hierarchyBytes() const {
   return nodes_.size() * sizeof(Node) + refs_.size() * sizeof(std::uint32_t);
+}
+
+std::size_t Bvh::memoryBytes() const {
+  return hierarchyBytes() + runs_.size() * sizeof(PacketRun) + packetData_.size() * sizeof(double);
 }
 
 } // namespace prism

@@ -14,6 +14,7 @@
 // one-primitive tests' answers.
 #pragma once
 
+#include "core/accel/packets.h"
 #include "core/accel/primitive_boxes.h"
 #include "core/accel/sah_builder.h"
 #include "core/accel/traversal_accel.h"
@@ -24,8 +25,6 @@
 
 namespace prism {
 
-template <class L> class PacketTest; // core/accel/packets.h
-
 // Whether `rays` walk a Bvh together in Bvh::closestHits: 2 to
 // Accel::kMaxBundle rays from one origin whose directions have, on each axis,
 // one sign and no component so small (or zero) that its reciprocal is infinite.
@@ -34,7 +33,7 @@ bool walksTogether(std::span<const Ray> rays);
 class Bvh final : public TraversalAccel<Bvh> {
 public:
   // Slices of long cones are kept only while the hierarchy (nodes and
-  // references, memoryBytes()) takes at most this much per primitive; where
+  // references, hierarchyBytes()) takes at most this much per primitive; where
   // they would take more (a scene of thin twigs, or nothing but bars) the
   // hierarchy of one box per primitive is built instead. 0: no bound (tests).
   struct Options {
@@ -50,7 +49,10 @@ public:
   // core/accel/bvh.cpp); a bundle that does not start at one point, or whose
   // directions differ in sign or have a zero component, goes ray by ray.
   std::uint64_t closestHits(std::span<const Ray> rays, std::span<Hit> hits) const override;
+  // The nodes, the references and the packets' stored data.
   std::size_t memoryBytes() const override;
+  // The nodes and references alone, which the bound of Options limits.
+  std::size_t hierarchyBytes() const;
 
   std::size_t nodeCount() const { return nodes_.size(); }
   // Whether one ray's node test runs in AVX: the processor has it, and
@@ -101,12 +103,23 @@ private:
                 bool& found, Hit* hit, std::optional<PacketTest<L>>& packets) const;
   std::uint64_t traverseBundle(std::span<const Ray> rays, std::span<Hit> hits) const;
 
+  // How the walk tests refs_[i]: alone (length 0: or inside a run begun
+  // before it), or as the first of a run of `length` (1 to 4) triangles or
+  // polygons tested at once, whose data start at packetData_[data].
+  struct PacketRun {
+    std::uint32_t data = 0;
+    std::uint8_t length = 0;
+    std::uint8_t polygonVertices = 0; // PolygonCorners::vertices; 0 for triangles
+  };
   const Scene& scene_;
   std::vector<Node> nodes_;         // nodes_[0] is the root
   std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 28 | index (bvh.cpp)
-  int depth_ = 0;                   // levels of nodes
-  bool avx_ = false;                // one ray's walk takes walkAvx
-  bool packetRuns_ = false;         // some leaf holds a run its walk tests at once (bvh.cpp)
+  // Beside refs_ where some leaf holds a run (packetRuns_), else empty.
+  std::vector<PacketRun> runs_;
+  std::vector<double> packetData_; // the runs' data, in leaf order (packets.h)
+  int depth_ = 0;                  // levels of nodes
+  bool avx_ = false;               // one ray's walk takes walkAvx
+  bool packetRuns_ = false;        // some leaf holds a run its walk tests at once
 };
 
 } // namespace prism

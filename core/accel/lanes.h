@@ -35,6 +35,8 @@ struct Lanes {
   static Lanes set(double x0, double x1, double x2, double x3) {
     return {_mm_set_pd(x1, x0), _mm_set_pd(x3, x2)};
   }
+  // Lane i is p[i].
+  static Lanes load(const double* p) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2)}; }
 };
 inline Lanes loadBounds(const float* p) {
   const __m128 f = _mm_loadu_ps(p);
@@ -98,6 +100,11 @@ struct Lanes {
 
   static Lanes splat(double x) { return {Vec4d{x, x, x, x}}; }
   static Lanes set(double x0, double x1, double x2, double x3) { return {Vec4d{x0, x1, x2, x3}}; }
+  static Lanes load(const double* p) {
+    Lanes r;
+    std::memcpy(&r.v, p, sizeof r.v);
+    return r;
+  }
 };
 // A mask's lanes (0 or -1) kept in a Lanes, bit for bit.
 inline Lanes fromMask(Mask4 m) { return {reinterpret_cast<Vec4d>(m)}; }
@@ -155,6 +162,8 @@ struct AvxLanes {
   [[gnu::target("avx")]] static AvxLanes set(double x0, double x1, double x2, double x3) {
     return of(_mm256_set_pd(x3, x2, x1, x0));
   }
+  // Lane i is p[i].
+  [[gnu::target("avx")]] static AvxLanes load(const double* p) { return of(_mm256_loadu_pd(p)); }
   [[gnu::target("avx")]] static AvxLanes of(__m256d v) {
     AvxLanes r;
     _mm256_storeu_pd(r.x, v);

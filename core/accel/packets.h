@@ -27,22 +27,27 @@
 #include "core/shapes/polygon.h"
 #include "core/shapes/triangle.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace prism {
 
-// The vertices of up to four triangles, one triangle a lane (a lane without
-// one repeats another's, and its answer is ignored).
-struct TriangleCorners {
-  const Vec3* v[4][3];
+// A packet's data are stored when a hierarchy is built, in its leaves'
+// order, so that a test loads whole lanes instead of looking each vertex up
+// through its primitive. Value j of lane i is data[j * stride + i], stride
+// being the number of lanes used (1 to 4): the values of lanes past it are
+// whatever follows in memory (the next values, or the next packet's), whose
+// answers are ignored, so that a packet of fewer than four costs no more
+// than its primitives. Whoever stores packets ends them with
+// kPacketPadding doubles, for the last one's unused lanes.
+inline constexpr std::size_t kPacketPadding = 3;
 
-  // Lane `lane` is `tri`.
-  void set(int lane, const Triangle& tri, const ShapeArrays& arrays) {
-    for (int k = 0; k < 3; ++k)
-      v[lane][k] = &arrays.meshVertices[tri.vertex[std::size_t(k)]];
-  }
+// Triangles: corner k's coordinate a is value 3 * k + a.
+struct TriangleCorners {
+  const double* data;
+  std::uint32_t stride;
 };
 
 // The most vertices a polygon tested in a packet may have: every lane walks
@@ -50,30 +55,22 @@ struct TriangleCorners {
 // are rare outside the polygons with an edge index, which are never packed.
 inline constexpr std::uint32_t kPacketPolygonVertices = 8;
 
-// Up to four polygons, a lane each as above: the vertices, first[lane][0,
-// last[lane]] (a polygon of fewer than `vertices` repeating its last), and
-// the plane, dot(normal, x) = offset, as Polygon stores it.
+// Polygons: the planes, dot(normal, x) = offset as Polygon stores them, the
+// normal's coordinate a as value a and the offset as value 3; then vertex
+// k's coordinate a as value 4 + 3 * k + a, for k below `vertices`, the most
+// of any lane's polygon (one of fewer repeats its last vertex).
 struct PolygonCorners {
-  const Vec3* first[4];
-  std::uint32_t last[4];
-  std::uint32_t vertices = 0; // the most of any lane's polygon
-  const Vec3* normal[4];
-  double offset[4];
-
-  // Lane `lane` is `p`.
-  void set(int lane, const Polygon& p, const ShapeArrays& arrays) {
-    first[lane] = &arrays.polygonVertices[p.firstVertex];
-    last[lane] = p.vertexCount - 1;
-    this->vertices = std::max(this->vertices, p.vertexCount);
-    normal[lane] = &p.normal;
-    offset[lane] = p.planeOffset;
-  }
-
-  // Lane i's vertex k (its last one for k past it).
-  const Vec3& vertex(int lane, std::uint32_t k) const {
-    return first[lane][k < last[lane] ? k : last[lane]];
-  }
+  const double* data;
+  std::uint32_t stride;
+  std::uint32_t vertices;
 };
+
+// Append the data of a packet of `shapes` (1 to 4; the stride is their
+// number) to `out`; the polygons' returns PolygonCorners::vertices.
+void appendPacket(std::span<const Triangle* const> shapes, const ShapeArrays& arrays,
+                  std::vector<double>& out);
+std::uint32_t appendPacket(std::span<const Polygon* const> shapes, const ShapeArrays& arrays,
+                           std::vector<double>& out);
 
 template <class L> class PacketTest {
 public:
@@ -97,16 +94,17 @@ public:
   }
 
 private:
-  // Vertex k's coordinates of the four lanes.
-  static void gather(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& v3, L (&out)[3]) {
-    for (int a = 0; a < 3; ++a)
-      out[a] = L::set(v0[a], v1[a], v2[a], v3[a]);
+  // Values first, first + 1 and first + 2 of the four lanes.
+  template <class Corners> static void gather(const Corners& c, std::size_t first, L (&out)[3]) {
+    for (std::size_t a = 0; a < 3; ++a)
+      out[a] = L::load(c.data + (first + a) * c.stride);
   }
-  static void gather(const TriangleCorners& c, int k, L (&out)[3]) {
-    gather(*c.v[0][k], *c.v[1][k], *c.v[2][k], *c.v[3][k], out);
+  // Corner k's coordinates.
+  static void corner(const TriangleCorners& c, int k, L (&out)[3]) {
+    gather(c, 3 * std::size_t(k), out);
   }
-  static void gather(const PolygonCorners& c, std::uint32_t k, L (&out)[3]) {
-    gather(c.vertex(0, k), c.vertex(1, k), c.vertex(2, k), c.vertex(3, k), out);
+  static void corner(const PolygonCorners& c, std::uint32_t k, L (&out)[3]) {
+    gather(c, 4 + 3 * std::size_t(k), out);
   }
 
   // A vertex moved by -origin and projected along the ray onto a plane
@@ -129,7 +127,7 @@ private:
     using lanes::lessEqual;
     L vertex[3][3], moved[3][3], px[3], py[3]; // [corner][axis], [corner]
     for (int k = 0; k < 3; ++k) {
-      gather(c, k, vertex[k]);
+      corner(c, k, vertex[k]);
       project<kz>(vertex[k], moved[k], px[k], py[k]);
     }
     // edgeFunction(p, q) = p.x * q.y - p.y * q.x, of b -> c, c -> a, a -> b.
@@ -164,12 +162,10 @@ private:
     // The plane first, as the scalar test: denominator glm::dot(normal, d),
     // t = (offset - glm::dot(normal, origin)) / denominator.
     L normal[3];
-    for (int a = 0; a < 3; ++a)
-      normal[a] =
-          L::set((*c.normal[0])[a], (*c.normal[1])[a], (*c.normal[2])[a], (*c.normal[3])[a]);
+    gather(c, 0, normal);
     const L zero = L::splat(0.0);
     const L denominator = normal[0] * dir_[0] + normal[1] * dir_[1] + normal[2] * dir_[2];
-    const L offset = L::set(c.offset[0], c.offset[1], c.offset[2], c.offset[3]);
+    const L offset = L::load(c.data + 3 * c.stride);
     const L tp =
         (offset - (normal[0] * origin_[0] + normal[1] * origin_[1] + normal[2] * origin_[2])) /
         denominator;
@@ -178,11 +174,11 @@ private:
     // The crossing number of the half-line toward +x from (0, 0), edge by
     // edge from the last vertex round (polygon.cpp's passesInside).
     L vertex[3], moved[3], ax, ay, bx, by;
-    gather(c, c.vertices - 1, vertex);
+    corner(c, c.vertices - 1, vertex);
     project<kz>(vertex, moved, ax, ay);
     L inside = zero;
     for (std::uint32_t k = 0; k < c.vertices; ++k) {
-      gather(c, k, vertex);
+      corner(c, k, vertex);
       project<kz>(vertex, moved, bx, by);
       const L straddles = less(zero, ay) ^ less(zero, by);
       const L e = ax * by - ay * bx;

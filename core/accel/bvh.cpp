@@ -351,6 +351,10 @@ public:
       nearOffset_[a] = f.nearOffset[a];
       farOffset_[a] = f.farOffset[a];
     }
+    widenDown_ = _mm256_set1_ps(kWidenDown);
+    widenUp_ = _mm256_set1_ps(kWidenUp);
+    widenTiny_ = _mm256_set1_ps(kWidenTiny);
+    asm("" : "+x"(widenDown_), "+x"(widenUp_), "+x"(widenTiny_));
   }
 
   [[gnu::target("avx")]] void setRange(Interval range) {
@@ -372,9 +376,8 @@ public:
       tNear = _mm256_max_ps(t0, tNear); // maxps and minps as in the SSE test
       tFar = _mm256_min_ps(t1, tFar);
     }
-    tNear =
-        _mm256_sub_ps(_mm256_mul_ps(tNear, _mm256_set1_ps(kWidenDown)), _mm256_set1_ps(kWidenTiny));
-    tFar = _mm256_add_ps(_mm256_mul_ps(tFar, _mm256_set1_ps(kWidenUp)), _mm256_set1_ps(kWidenTiny));
+    tNear = _mm256_sub_ps(_mm256_mul_ps(tNear, widenDown_), widenTiny_);
+    tFar = _mm256_add_ps(_mm256_mul_ps(tFar, widenUp_), widenTiny_);
     _mm256_storeu_ps(tEnter, tNear);
     return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(tNear, tFar, _CMP_LE_OQ)));
   }
@@ -382,6 +385,9 @@ public:
 private:
   __m256 nearOrigin_[3], farOrigin_[3], inv_[3];
   __m256 rangeMinWide_, rangeMaxWide_;
+  // The widening, kept beside the ray's values so that the node test reads
+  // them as memory operands, not broadcast anew from constants at every node.
+  __m256 widenDown_, widenUp_, widenTiny_;
   std::size_t nearOffset_[3], farOffset_[3];
 };
 #endif

@@ -142,20 +142,29 @@ private:
 //    rounding moves it by at most 2^-24 of that, so it stays on the side of
 //    the double test's origin that makes the box wider;
 //  - what remains is relative: the rounding of the subtraction, of 1/d and
-//    of the product, 3 float ulps of t against 2 double ulps, and of the
-//    range's ends, half a float ulp; below float's normal range, an
+//    of the product, about 4 float ulps of t against 2 double ulps, and of
+//    the range's ends, half a float ulp; below float's normal range, an
 //    absolute 2^-150;
-//  - so the entry is moved down and the exit up by 2^-20 of their size (16
-//    float ulps) and by 2^-140, which holds the double test's interval.
-//    Entries and exits are at least 0 (the range starts at 0 or later), so
-//    scaling by 1 - 2^-20 moves an entry down and 1 + 2^-20 an exit up; an
-//    exit that overflows float is infinite, and one of FLT_MAX becomes so.
+//  - so every entry is made smaller and every exit larger by 2^-20 of its
+//    size (16 float ulps), which holds the double test's interval: the near
+//    bounds' times are taken with 1/d times 1 - 2^-20 and the far bounds'
+//    with 1/d times 1 + 2^-20 (each rounded to float: one ulp more), the
+//    range's start is taken times 1 - 2^-20 and its end times 1 + 2^-20.
+//    Scaled so, a time of either sign moves toward 0 or away from it, whole:
+//    a negative entry (the origin inside the slab) may move up toward 0 but
+//    stays below the range's start, which is 0 or later, so the entry is
+//    still the range's; a negative exit misses either way. Then the entry is
+//    lowered by 2^-140, for the absolute errors below float's normal range.
+//    An exit beyond float's range is infinite, or FLT_MAX where the entry is
+//    smaller still. The widening is thus folded into per-ray values, off a
+//    node's path from its bounds to its answer.
 // Rays that it cannot take (suits) use DoubleNodeTest.
 // The per-ray values of the float tests: the origins moved by the slack
-// (above) and rounded, 1/d rounded, and where in a node each axis's near and
-// far bounds are (byte offsets of rows of Node::bounds).
+// (above) and rounded, 1/d widened (above) and rounded, and where in a node
+// each axis's near and far bounds are (byte offsets of rows of
+// Node::bounds).
 struct FloatRay {
-  float nearOrigin[3], farOrigin[3], inv[3];
+  float nearOrigin[3], farOrigin[3], nearInv[3], farInv[3];
   std::size_t nearOffset[3], farOffset[3];
 
   // Whether the float tests can take `ray` over `range`: the range starts at
@@ -174,9 +183,13 @@ inline const float* boundsRow(const Bvh::Node& node, std::size_t offset) {
 }
 
 // The widening of entries and exits (above).
-constexpr float kWidenDown = 1.0f - 0x1p-20f;
-constexpr float kWidenUp = 1.0f + 0x1p-20f;
+constexpr double kWidenDown = 1.0 - 0x1p-20;
+constexpr double kWidenUp = 1.0 + 0x1p-20;
 constexpr float kWidenTiny = 0x1p-140f;
+// The range's ends in float, widened (an end of 0 or infinity stays so; a
+// tiny end gains the 2^-140 too).
+inline float floatRangeMin(double min) { return float(min) * float(kWidenDown); }
+inline float floatRangeMax(double max) { return float(max) * float(kWidenUp) + kWidenTiny; }
 
 class FloatNodeTest {
 public:
@@ -189,18 +202,19 @@ public:
     for (int a = 0; a < 3; ++a) {
       nearOrigin_[a] = broadcastF(f.nearOrigin[a]);
       farOrigin_[a] = broadcastF(f.farOrigin[a]);
-      inv_[a] = broadcastF(f.inv[a]);
+      nearInv_[a] = broadcastF(f.nearInv[a]);
+      farInv_[a] = broadcastF(f.farInv[a]);
       nearOffset_[a] = f.nearOffset[a];
       farOffset_[a] = f.farOffset[a];
     }
-    asm("" : "+x"(widenDown_), "+x"(widenUp_), "+x"(widenTiny_));
+    asm("" : "+x"(widenTiny_));
   }
 
   void setRange(Interval range) {
-    rangeMin_ = broadcastF(float(range.min));
+    rangeMin_ = broadcastF(floatRangeMin(range.min));
     setRangeMax(range.max);
   }
-  void setRangeMax(double max) { rangeMax_ = broadcastF(float(max)); }
+  void setRangeMax(double max) { rangeMax_ = broadcastF(floatRangeMax(max)); }
 
   // As DoubleNodeTest::meet.
   unsigned meet(const Bvh::Node& node, float (&tEnter)[Bvh::kWidth]) const {
@@ -210,14 +224,13 @@ public:
       LanesF tFar = rangeMax_;
       for (int a = 0; a < 3; ++a) {
         const LanesF t0 =
-            mulF(subF(loadF(boundsRow(node, nearOffset_[a]) + h), nearOrigin_[a]), inv_[a]);
+            mulF(subF(loadF(boundsRow(node, nearOffset_[a]) + h), nearOrigin_[a]), nearInv_[a]);
         const LanesF t1 =
-            mulF(subF(loadF(boundsRow(node, farOffset_[a]) + h), farOrigin_[a]), inv_[a]);
+            mulF(subF(loadF(boundsRow(node, farOffset_[a]) + h), farOrigin_[a]), farInv_[a]);
         tNear = maxOrF(t0, tNear); // a NaN leaves the range unchanged, as above
         tFar = minOrF(t1, tFar);
       }
-      tNear = subF(mulF(tNear, widenDown_), widenTiny_);
-      tFar = addF(mulF(tFar, widenUp_), widenTiny_);
+      tNear = subF(tNear, widenTiny_);
       storeF(tEnter + h, tNear);
       mask |= lessEqualMaskF(tNear, tFar) << h;
     }
@@ -227,12 +240,10 @@ public:
 private:
   LanesF nearOrigin_[3]; // see slackOrigin
   LanesF farOrigin_[3];
-  LanesF inv_[3];
+  LanesF nearInv_[3], farInv_[3];
   LanesF rangeMin_, rangeMax_;
-  // Hidden from the optimiser (ctor), which would otherwise splat each
+  // Hidden from the optimiser (ctor), which would otherwise splat the
   // constant anew at every node.
-  LanesF widenDown_ = broadcastF(kWidenDown);
-  LanesF widenUp_ = broadcastF(kWidenUp);
   LanesF widenTiny_ = broadcastF(kWidenTiny);
   std::size_t nearOffset_[3], farOffset_[3];
 };
@@ -294,10 +305,13 @@ inline FloatRay::FloatRay(const Ray& ray) {
   auto storeZ = [](float* out, __m128d z) { _mm_store_ss(out + 2, _mm_cvtpd_ps(z)); };
   storeXY(nearOrigin, _mm_add_pd(o.xy, toward(d.xy)));
   storeXY(farOrigin, _mm_sub_pd(o.xy, toward(d.xy)));
-  storeXY(inv, _mm_div_pd(one, d.xy));
+  const __m128d invXY = _mm_div_pd(one, d.xy), invZ = _mm_div_sd(one, d.z0);
+  storeXY(nearInv, _mm_mul_pd(invXY, _mm_set1_pd(kWidenDown)));
+  storeXY(farInv, _mm_mul_pd(invXY, _mm_set1_pd(kWidenUp)));
   storeZ(nearOrigin, _mm_add_sd(o.z0, toward(d.z0)));
   storeZ(farOrigin, _mm_sub_sd(o.z0, toward(d.z0)));
-  storeZ(inv, _mm_div_sd(one, d.z0));
+  storeZ(nearInv, _mm_mul_sd(invZ, _mm_set_sd(kWidenDown)));
+  storeZ(farInv, _mm_mul_sd(invZ, _mm_set_sd(kWidenUp)));
   const unsigned negative = maskPair(d.xy, d.z0);
   for (int a = 0; a < 3; ++a) {
     const std::size_t bit = negative >> a & 1u;
@@ -324,7 +338,8 @@ inline FloatRay::FloatRay(const Ray& ray) {
     const SlackOrigin o = slackOrigin(ray.origin[a], negative ? -1.0 : 1.0, slack);
     nearOrigin[a] = float(o.near);
     farOrigin[a] = float(o.far);
-    inv[a] = float(1.0 / ray.dir[a]);
+    nearInv[a] = float(1.0 / ray.dir[a] * kWidenDown);
+    farInv[a] = float(1.0 / ray.dir[a] * kWidenUp);
     const std::size_t bit = negative ? 1 : 0;
     nearOffset[a] = (2 * std::size_t(a) + bit) * sizeof(Bvh::Node::bounds[0]);
     farOffset[a] = (2 * std::size_t(a) + 1 - bit) * sizeof(Bvh::Node::bounds[0]);
@@ -347,22 +362,21 @@ public:
     for (int a = 0; a < 3; ++a) {
       nearOrigin_[a] = _mm256_broadcast_ss(&f.nearOrigin[a]);
       farOrigin_[a] = _mm256_broadcast_ss(&f.farOrigin[a]);
-      inv_[a] = _mm256_broadcast_ss(&f.inv[a]);
+      nearInv_[a] = _mm256_broadcast_ss(&f.nearInv[a]);
+      farInv_[a] = _mm256_broadcast_ss(&f.farInv[a]);
       nearOffset_[a] = f.nearOffset[a];
       farOffset_[a] = f.farOffset[a];
     }
-    widenDown_ = _mm256_set1_ps(kWidenDown);
-    widenUp_ = _mm256_set1_ps(kWidenUp);
     widenTiny_ = _mm256_set1_ps(kWidenTiny);
-    asm("" : "+x"(widenDown_), "+x"(widenUp_), "+x"(widenTiny_));
+    asm("" : "+x"(widenTiny_));
   }
 
   [[gnu::target("avx")]] void setRange(Interval range) {
-    rangeMinWide_ = _mm256_set1_ps(float(range.min));
+    rangeMinWide_ = _mm256_set1_ps(floatRangeMin(range.min));
     setRangeMax(range.max);
   }
   [[gnu::target("avx")]] void setRangeMax(double max) {
-    rangeMaxWide_ = _mm256_set1_ps(float(max));
+    rangeMaxWide_ = _mm256_set1_ps(floatRangeMax(max));
   }
 
   [[gnu::target("avx")]] unsigned meet(const Bvh::Node& node, float (&tEnter)[Bvh::kWidth]) const {
@@ -370,24 +384,24 @@ public:
     __m256 tFar = rangeMaxWide_;
     for (int a = 0; a < 3; ++a) {
       const __m256 t0 = _mm256_mul_ps(
-          _mm256_sub_ps(_mm256_load_ps(boundsRow(node, nearOffset_[a])), nearOrigin_[a]), inv_[a]);
+          _mm256_sub_ps(_mm256_load_ps(boundsRow(node, nearOffset_[a])), nearOrigin_[a]),
+          nearInv_[a]);
       const __m256 t1 = _mm256_mul_ps(
-          _mm256_sub_ps(_mm256_load_ps(boundsRow(node, farOffset_[a])), farOrigin_[a]), inv_[a]);
+          _mm256_sub_ps(_mm256_load_ps(boundsRow(node, farOffset_[a])), farOrigin_[a]), farInv_[a]);
       tNear = _mm256_max_ps(t0, tNear); // maxps and minps as in the SSE test
       tFar = _mm256_min_ps(t1, tFar);
     }
-    tNear = _mm256_sub_ps(_mm256_mul_ps(tNear, widenDown_), widenTiny_);
-    tFar = _mm256_add_ps(_mm256_mul_ps(tFar, widenUp_), widenTiny_);
+    tNear = _mm256_sub_ps(tNear, widenTiny_);
     _mm256_storeu_ps(tEnter, tNear);
     return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(tNear, tFar, _CMP_LE_OQ)));
   }
 
 private:
-  __m256 nearOrigin_[3], farOrigin_[3], inv_[3];
+  __m256 nearOrigin_[3], farOrigin_[3], nearInv_[3], farInv_[3];
   __m256 rangeMinWide_, rangeMaxWide_;
-  // The widening, kept beside the ray's values so that the node test reads
-  // them as memory operands, not broadcast anew from constants at every node.
-  __m256 widenDown_, widenUp_, widenTiny_;
+  // Kept beside the ray's values so that the node test reads it as a memory
+  // operand, not broadcast anew from a constant at every node.
+  __m256 widenTiny_;
   std::size_t nearOffset_[3], farOffset_[3];
 };
 #endif

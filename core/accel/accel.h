@@ -76,8 +76,9 @@ public:
   static constexpr std::size_t kMaxBundle = 64;
   virtual std::uint64_t closestHits(std::span<const Ray> rays, std::span<Hit> hits) const;
 
-  // Bytes held by the structure itself (nodes and primitive references, not the
-  // scene's primitives), for the benchmark's bytes per primitive.
+  // Bytes held by the structure itself (nodes, primitive references and the
+  // copies of primitives' data it keeps for its own tests; not the scene's
+  // primitives), for the benchmark's bytes per primitive.
   virtual std::size_t memoryBytes() const = 0;
 };
 

@@ -72,13 +72,15 @@ public:
     // bounds[2 * axis + 1] their upper bounds. An unused slot has an empty box
     // (lower +inf, upper -inf), which no ray hits.
     float bounds[6][kWidth];
-    // An inner node's index, or kLeafBit | (count - 1) << kCountShift | first:
-    // the primitives refs_[first, first + count).
+    // An inner node's index, or kLeafBit | (count - 1) << kCountShift |
+    // first, and kPacketsBit where the leaf holds a run tested at once: the
+    // primitives refs_[first, first + count).
     std::uint32_t child[kWidth];
   };
   static constexpr std::uint32_t kLeafBit = 1u << 31;
   static constexpr int kCountShift = 27;
-  static constexpr std::uint32_t kFirstMask = (1u << kCountShift) - 1;
+  static constexpr std::uint32_t kPacketsBit = 1u << 26;
+  static constexpr std::uint32_t kFirstMask = kPacketsBit - 1;
   static constexpr std::uint32_t kMaxLeaf = 16;
 
 private:
@@ -86,7 +88,7 @@ private:
   struct BuildContext;
   void build(const std::vector<BoxedPrimitive>& boxed);
   std::uint32_t collapse(BuildContext& context, std::uint32_t binaryNode, int depth);
-  std::uint32_t emitLeaf(const BuildContext& context, const SahTree::Node& leaf);
+  std::uint32_t emitLeaf(BuildContext& context, const SahTree::Node& leaf);
 
   template <bool AnyHit>
   bool traverse(const Ray& ray, Interval range, const PrimitiveRef* skip, Hit* hit) const;
@@ -114,12 +116,13 @@ private:
   const Scene& scene_;
   std::vector<Node> nodes_;         // nodes_[0] is the root
   std::vector<std::uint32_t> refs_; // primitives in leaf order: kind << 28 | index (bvh.cpp)
-  // Beside refs_ where some leaf holds a run (packetRuns_), else empty.
+  // Beside refs_ where the walk tests runs (packetRuns_), else empty.
   std::vector<PacketRun> runs_;
   std::vector<double> packetData_; // the runs' data, in leaf order (packets.h)
   int depth_ = 0;                  // levels of nodes
   bool avx_ = false;               // one ray's walk takes walkAvx
-  bool packetRuns_ = false;        // some leaf holds a run its walk tests at once
+  bool packetRuns_ =
+      false; // the walk tests leaves' runs at once (bvh.cpp: enough leaves hold some)
 };
 
 } // namespace prism

@@ -1,8 +1,8 @@
 #include "bench_command.h"
 
 #include "bench_latency.h"
-#include "bench_startup.h"
 #include "bench_measure.h"
+#include "bench_startup.h"
 #include "cli_options.h"
 #include "load_scene.h"
 #include "render_command.h"
@@ -253,8 +253,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommandOptions& o) {
   cmd->add_option("--data", o.data, "Write the scaling series to this file (for gnuplot)");
   cmd->add_flag("--latency", o.latency,
                 "Instead: the previewer's latency after a light move on each scene (640 x 480)");
-  cmd->add_flag("--startup", o.startup,
-                "Instead: the CPU time and memory of `prism --version`, `--help` and a tiny render");
+  cmd->add_flag(
+      "--startup", o.startup,
+      "Instead: the CPU time and memory of `prism --version`, `--help` and a tiny render");
   return cmd;
 }
 

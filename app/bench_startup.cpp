@@ -34,7 +34,8 @@ double millis(const timeval& t) { return double(t.tv_sec) * 1e3 + double(t.tv_us
 // throws when it cannot be started or does not exit with status 0.
 ChildCost runChild(const std::string& exe, const std::vector<std::string>& args) {
   std::vector<char*> argv{const_cast<char*>(exe.c_str())};
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  for (const std::string& a : args)
+    argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);

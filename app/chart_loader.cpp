@@ -9,8 +9,8 @@
 namespace prism {
 
 std::string writeChartPng(const Chart& chart, const std::string& path, int width, int height) {
-  using WriteChartFn = int (*)(const Chart*, const char*, int, int, std::string*, std::string*,
-                               int*);
+  using WriteChartFn =
+      int (*)(const Chart*, const char*, int, int, std::string*, std::string*, int*);
   auto draw = reinterpret_cast<WriteChartFn>(oiioModuleSymbol("prism_oiio_write_chart"));
   std::string warnings, error;
   int invalidArgument = 0;

@@ -22,7 +22,8 @@ std::optional<std::string> srunWithoutMpiProblem() {
   if (startedByMpiLauncher() || !tasks || std::atoi(tasks) <= 1) return std::nullopt;
   return std::string("started by srun as one of ") + tasks +
          " tasks without an MPI process manager: every task would do the whole job "
-         "and write the same files; run `srun --mpi=pmix ...` or `mpirun ...` inside the allocation "
+         "and write the same files; run `srun --mpi=pmix ...` or `mpirun ...` inside the "
+         "allocation "
          "(docs/distributed.md)";
 }
 

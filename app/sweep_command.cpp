@@ -150,7 +150,8 @@ CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& o) {
   command->add_flag("--quick", o.quick,
                     "Small pictures: the scene's at " + std::to_string(kQuickSweepSide) +
                         " pixels on the longer side");
-  addRangedOption(*command, "--threads", o.threads, "Render threads (0: every core this process may use)", 0, 1024);
+  addRangedOption(*command, "--threads", o.threads,
+                  "Render threads (0: every core this process may use)", 0, 1024);
   command->add_flag("-q,--quiet", o.quiet, "No progress and no summary on stderr");
   return command;
 }

@@ -5,18 +5,18 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <chrono>
-#include <csignal>
-#include <cstdlib>
-#include <sstream>
-#include <string>
-#include <thread>
 #include <atomic>
+#include <chrono>
 #include <climits>
+#include <csignal>
 #include <cstddef>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <sstream>
 #include <stdexcept>
+#include <string>
+#include <thread>
 
 namespace prism::mpi {
 
@@ -34,8 +34,8 @@ void allreduceInPlace(void* data, std::size_t count, MPI_Datatype type, std::siz
   }
 }
 
-void reduceToRoot(void* data, std::size_t count, MPI_Datatype type, std::size_t typeSize,
-                  MPI_Op op, int rank) {
+void reduceToRoot(void* data, std::size_t count, MPI_Datatype type, std::size_t typeSize, MPI_Op op,
+                  int rank) {
   auto* bytes = static_cast<unsigned char*>(data);
   for (std::size_t done = 0; done < count; done += kMaxPart) {
     const int part = int(std::min(kMaxPart, count - done));
@@ -98,8 +98,7 @@ private:
   int columns_ = 0;
 };
 
-constexpr TileGrid::Side kSides[] = {TileGrid::Left, TileGrid::Right, TileGrid::Up,
-                                     TileGrid::Down};
+constexpr TileGrid::Side kSides[] = {TileGrid::Left, TileGrid::Right, TileGrid::Up, TileGrid::Down};
 
 } // namespace
 

@@ -59,8 +59,8 @@ public:
                MPI_COMM_WORLD);
     std::vector<RankStats> stats;
     for (std::size_t r = 0; r < all.size(); ++r)
-      stats.push_back({int(r), all[r].host, all[r].threads, all[r].tiles, all[r].rays,
-                       all[r].cpuSeconds});
+      stats.push_back(
+          {int(r), all[r].host, all[r].threads, all[r].tiles, all[r].rays, all[r].cpuSeconds});
     return stats;
   }
 

@@ -45,15 +45,15 @@ void WorkDispenser::run(int itemCount, int localWorkers,
                         const std::function<void(ItemQueue&)>& runLocal,
                         const std::function<void(int, int)>& progress) {
   ItemQueue queue;
-  int next = 0;                   // rank 0: the first item not handed out
-  int jobDone = 0;                // rank 0: items finished over the job
-  int ranksTold = 0;              // rank 0: processes told there are no more
-  int reported = -1;              // rank 0: jobDone when progress last heard it
-  const int low = localWorkers;   // refill below one queued item per worker
-  bool asking = false;            // rank > 0: a request is out
-  int unreported = 0;             // rank > 0: items finished, for the next request
+  int next = 0;                 // rank 0: the first item not handed out
+  int jobDone = 0;              // rank 0: items finished over the job
+  int ranksTold = 0;            // rank 0: processes told there are no more
+  int reported = -1;            // rank 0: jobDone when progress last heard it
+  const int low = localWorkers; // refill below one queued item per worker
+  bool asking = false;          // rank > 0: a request is out
+  int unreported = 0;           // rank > 0: items finished, for the next request
   int grant[2] = {0, 0};
-  int request[2] = {0, 0};        // the request in flight (MPI owns it until sent)
+  int request[2] = {0, 0}; // the request in flight (MPI owns it until sent)
   MPI_Request grantRequest = MPI_REQUEST_NULL, requestRequest = MPI_REQUEST_NULL;
 
   // The items rank 0 gives out next, contiguous: guided self-scheduling, a

@@ -35,7 +35,7 @@ private:
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<int> items_;
-  bool closed_ = false;    // no more items will be added
+  bool closed_ = false;     // no more items will be added
   int doneSinceReport_ = 0; // finished items not yet reported to rank 0
   bool localDone_ = false;  // the local threads have all returned
 };
@@ -53,8 +53,8 @@ public:
   // thread of its own and must take items from `queue` until it returns -1
   // on each of `localWorkers` workers, then return. Returns when every
   // process's items are done (all leave together); rethrows at once what
-  // `runLocal` threw (the caller must end the job: the others would wait). On rank 0, `progress(done,
-  // itemCount)` hears how many items the job has finished.
+  // `runLocal` threw (the caller must end the job: the others would wait). On rank 0,
+  // `progress(done, itemCount)` hears how many items the job has finished.
   void run(int itemCount, int localWorkers, const std::function<void(ItemQueue&)>& runLocal,
            const std::function<void(int done, int total)>& progress = {});
 

@@ -107,8 +107,7 @@ TEST_F(MpiRender, NoAntialiasingAndTheBailoutAreTheOneProcessPictureToo) {
 TEST_F(MpiRender, ASlowRankIsGivenFewerTiles) {
   const std::string args = scene("chex.sc") + " --size 128 128 --no-aa -q --threads 1";
   ASSERT_EQ(render(0, "one", args).exitCode, 0);
-  const RunResult many =
-      render(2, "slow", args, "PRISM_MPI_SIMULATE=rank=1,tile_delay_ms=40 ");
+  const RunResult many = render(2, "slow", args, "PRISM_MPI_SIMULATE=rank=1,tile_delay_ms=40 ");
   ASSERT_EQ(many.exitCode, 0) << many.err;
   EXPECT_EQ(readRadiance(dir_ / "slow.tiff"), readRadiance(dir_ / "one.tiff"));
   const nlohmann::json s = stats("slow");
@@ -143,7 +142,8 @@ TEST_F(MpiRender, WaitingForWorkOrRequestsSleepsInsteadOfSpinning) {
 // picture and no statistics.
 TEST_F(MpiRender, AKilledRankEndsTheJobWithAMessageAndNoFiles) {
   const std::string args = scene("glass.sc") + " --size 160 120 -q --threads 1";
-  const RunResult killed = render(2, "killed", args, "PRISM_MPI_SIMULATE=rank=1,die_after_tiles=2 ");
+  const RunResult killed =
+      render(2, "killed", args, "PRISM_MPI_SIMULATE=rank=1,die_after_tiles=2 ");
   EXPECT_NE(killed.exitCode, 0);
   EXPECT_NE(killed.exitCode, 124) << "the job hung until the timeout";
   EXPECT_NE((killed.out + killed.err).find("rank 1"), std::string::npos) << killed.err;
@@ -160,21 +160,28 @@ TEST_F(MpiRender, AKilledRankEndsTheJobWithAMessageAndNoFiles) {
 TEST_F(MpiRender, CtrlCOnMpirunStopsEveryRankAndWritesNothing) {
   const fs::path out = dir_ / "interrupted.tiff";
   const std::string ranks = std::string("^") + PRISM_BINARY + " render .*" + out.string();
-  const std::string script =
-      "PRISM_MPI_SIMULATE=rank=0,tile_delay_ms=5000 " + mpirunPrefix(2) + quoted(PRISM_BINARY) +
-      " render " + scene("glass.sc") + " --size 320 240 --threads 1 -q -o " + quoted(out) +
-      " & job=$!\n"
-      // Until both ranks exist (at most 60 s).
-      "i=0; while [ \"$(pgrep -c -f '" + ranks + "')\" -lt 2 ] && [ $i -lt 1200 ]; do\n"
-      "  sleep 0.05; i=$((i+1)); done\n"
-      "echo \"ranks seen: $(pgrep -c -f '" + ranks + "')\"\n"
-      "kill -INT $job\n"
-      "wait $job; echo \"status $?\"\n"
-      // mpirun may return while its ranks are still being ended: until
-      // none is left (at most 10 s).
-      "i=0; while [ \"$(pgrep -c -f '" + ranks + "')\" -gt 0 ] && [ $i -lt 200 ]; do\n"
-      "  sleep 0.05; i=$((i+1)); done\n"
-      "echo \"ranks left: $(pgrep -c -f '" + ranks + "')\"\n";
+  const std::string script = "PRISM_MPI_SIMULATE=rank=0,tile_delay_ms=5000 " + mpirunPrefix(2) +
+                             quoted(PRISM_BINARY) + " render " + scene("glass.sc") +
+                             " --size 320 240 --threads 1 -q -o " + quoted(out) +
+                             " & job=$!\n"
+                             // Until both ranks exist (at most 60 s).
+                             "i=0; while [ \"$(pgrep -c -f '" +
+                             ranks +
+                             "')\" -lt 2 ] && [ $i -lt 1200 ]; do\n"
+                             "  sleep 0.05; i=$((i+1)); done\n"
+                             "echo \"ranks seen: $(pgrep -c -f '" +
+                             ranks +
+                             "')\"\n"
+                             "kill -INT $job\n"
+                             "wait $job; echo \"status $?\"\n"
+                             // mpirun may return while its ranks are still being ended: until
+                             // none is left (at most 10 s).
+                             "i=0; while [ \"$(pgrep -c -f '" +
+                             ranks +
+                             "')\" -gt 0 ] && [ $i -lt 200 ]; do\n"
+                             "  sleep 0.05; i=$((i+1)); done\n"
+                             "echo \"ranks left: $(pgrep -c -f '" +
+                             ranks + "')\"\n";
   writeFile(dir_ / "interrupt.sh", script);
   const RunResult run = test::run(dir_.path(), "sh " + quoted(dir_ / "interrupt.sh"));
   EXPECT_NE(run.out.find("ranks seen: 2"), std::string::npos) << run.out << run.err;
@@ -206,7 +213,7 @@ TEST_F(MpiRender, ASceneErrorIsReportedOnceWithStatusTwo) {
 TEST_F(MpiRender, AnUnwritableOutputStopsEveryRankBeforeTheRender) {
   const RunResult unwritable =
       run(dir_.path(), mpirunPrefix(2) + quoted(PRISM_BINARY) + " render " + scene("glass.sc") +
-                                 " -o " + quoted(dir_ / "no" / "such" / "dir" / "x.tiff") + " -q");
+                           " -o " + quoted(dir_ / "no" / "such" / "dir" / "x.tiff") + " -q");
   EXPECT_EQ(unwritable.exitCode, 1) << unwritable.err;
   const std::size_t first = unwritable.err.find("prism: error:");
   ASSERT_NE(first, std::string::npos) << unwritable.err;
@@ -222,9 +229,9 @@ TEST_F(MpiRender, SrunWithoutAnMpiProcessManagerIsRefused) {
   EXPECT_NE(refused.err.find("srun --mpi=pmix"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(dir_ / "srun.tiff"));
   // One task is a plain run.
-  EXPECT_EQ(render(0, "one", scene("table.sc") + " --size 16 12 -q", "SLURM_STEP_NUM_TASKS=1 ")
-                .exitCode,
-            0);
+  EXPECT_EQ(
+      render(0, "one", scene("table.sc") + " --size 16 12 -q", "SLURM_STEP_NUM_TASKS=1 ").exitCode,
+      0);
 }
 
 // MPI costs nothing where it is not used: a render started without a

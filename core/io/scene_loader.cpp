@@ -22,8 +22,6 @@ Scene loadAnyScene(const std::filesystem::path& path, std::vector<Diagnostic>* w
   return loadScene(path);
 }
 
-std::string formatWarning(const Diagnostic& d) {
-  return d.format("warning");
-}
+std::string formatWarning(const Diagnostic& d) { return d.format("warning"); }
 
 } // namespace prism

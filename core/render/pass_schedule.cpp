@@ -110,8 +110,8 @@ public:
       if (traced_[t] == 0) continue;
       const Tile& tile = s_.tiles_[t];
       for (int y = tile.y0; y < tile.y1; ++y)
-        sum += sumOfMaxima(std::span(film_.centre).subspan(film_.index(tile.x0, y),
-                                                           std::size_t(tile.x1 - tile.x0)));
+        sum += sumOfMaxima(std::span(film_.centre)
+                               .subspan(film_.index(tile.x0, y), std::size_t(tile.x1 - tile.x0)));
     }
     executor_.sumOverProcesses(sum);
     // The ring of neighbours is for pass 2's decisions only.
@@ -204,10 +204,10 @@ private:
   Executor& executor_;
   ScheduleSink& sink_;
   const StopCheck& stop_;
-  std::vector<RayCounts> counts_;     // per worker
+  std::vector<RayCounts> counts_;    // per worker
   std::vector<std::uint8_t> traced_; // per tile: 1 once its centres are in the film
   std::vector<std::uint8_t> marks_;  // per pixel: 1 where pass 2 supersamples
-  BailoutBound bound_;                // inactive unless settings.bailout > 0
+  BailoutBound bound_;               // inactive unless settings.bailout > 0
 };
 
 bool PassSchedule::run(Film& film, Executor& executor, ScheduleSink& sink, const StopCheck& stop,

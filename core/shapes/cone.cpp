@@ -1,7 +1,7 @@
 #include "core/shapes/cone.h"
 
-#include "core/shapes/axis_frame.h"
 #include "core/shapes/affine_frame.h"
+#include "core/shapes/axis_frame.h"
 #include "core/shapes/roundoff.h"
 
 #include <algorithm>

@@ -184,6 +184,89 @@ TEST(PolygonEdges, RaysThroughVertexRowsFollowTheHalfOpenRuleExactly) {
   }
 }
 
+// A gear as the SPD gears scene draws one: `teeth` teeth of four vertices
+// each between radii 0.8 and 1, around `centre`.
+std::vector<glm::dvec2> gear(int teeth, glm::dvec2 centre = {0.0, 0.0}) {
+  std::vector<glm::dvec2> points;
+  for (int i = 0; i < teeth; ++i)
+    for (const auto& [step, radius] : {std::pair{0.0, 0.8}, {0.1, 1.0}, {0.4, 1.0}, {0.5, 0.8}}) {
+      const double a = 2.0 * kPi * (i + step) / teeth;
+      points.push_back(centre + radius * glm::dvec2(std::cos(a), std::sin(a)));
+    }
+  return points;
+}
+
+// The grid in front of the tree (polygon_edges.h) answers where no edge is
+// near, and there as the full test does: a ray straight down the normal
+// meets the plane exactly at the point asked, so the full test of that ray
+// is the independent check. Points: random over the box, on the cells'
+// borders, and at distances from 1e-15 to 1e-2 of the edges on both sides.
+TEST(PolygonEdges, TheGridAnswersAwayFromTheEdgesAsTheFullTestDoes) {
+  std::mt19937 rng(13);
+  for (const glm::dvec2 centre : {glm::dvec2(0.0, 0.0), glm::dvec2(1e6, -3e5)}) {
+    const std::vector<glm::dvec2> points = gear(36, centre);
+    Scene scene;
+    SceneBuilder build(scene);
+    const PrimitiveRef ref = build.polygon(placed(points, 0), build.material(Material{}), Origin{});
+    const Polygon& p = scene.shapes<Polygon>()[ref.index];
+    const PolygonEdgeIndex& index = scene.polygonEdgeIndices.at(p.edgeIndex);
+    int known = 0, asked = 0;
+    const auto check = [&](glm::dvec2 q) {
+      ++asked;
+      const PolygonEdgeIndex::GridAnswer answer = index.gridAnswer(q.x, q.y);
+      if (answer == PolygonEdgeIndex::kNearEdge) return;
+      ++known;
+      double t = 0.0;
+      const bool full = intersect(p, scene.polygonVertices.data(),
+                                  Ray{Vec3(q.x, q.y, 2.0), Vec3(0, 0, -1)}, Interval{}, t);
+      EXPECT_EQ(answer == PolygonEdgeIndex::kInside, full) << q.x << " " << q.y;
+    };
+    std::uniform_real_distribution<double> unit(-1.05, 1.05), along(0.0, 1.0);
+    for (int i = 0; i < 20000; ++i)
+      check(centre + glm::dvec2(unit(rng), unit(rng)));
+    // The hand-known answers: the centre is inside, the box's corners outside.
+    EXPECT_EQ(index.gridAnswer(centre.x, centre.y), PolygonEdgeIndex::kInside);
+    EXPECT_EQ(index.gridAnswer(centre.x - 0.99, centre.y - 0.99), PolygonEdgeIndex::kOutside);
+    const int random = known;
+    EXPECT_GT(random, 20000 / 2) << "the grid should know most of a gear's box";
+    // Next to every edge, on both sides, and on the lines of a fine lattice
+    // (which holds every cell border of a grid that divides the box evenly).
+    for (std::size_t e = 0; e < points.size(); ++e) {
+      const glm::dvec2 a = points[e], b = points[(e + 1) % points.size()];
+      const glm::dvec2 normal = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));
+      for (double d = 1e-15; d < 2e-2; d *= 3.0)
+        for (const double side : {-1.0, 1.0})
+          check(a + along(rng) * (b - a) + side * d * normal);
+      check(a);
+    }
+    for (int i = 0; i <= 512; ++i)
+      for (int j = 0; j <= 64; ++j)
+        check(centre + glm::dvec2(-1.0 + i / 256.0, -1.0 + j / 32.0));
+    EXPECT_GT(known, random);
+    EXPECT_LT(known, asked);
+  }
+}
+
+// A polygon of many long edges crossing one another (random points) would
+// have a grid nearly all near an edge, made slowly: it goes without one, and
+// the tree answers as the full test does.
+TEST(PolygonEdges, APolygonOfCrossingEdgesGoesWithoutAGrid) {
+  std::mt19937 rng(17);
+  std::vector<glm::dvec2> points;
+  for (int i = 0; i < 20000; ++i)
+    points.push_back(inSquare(rng, 1.0));
+  Scene scene;
+  SceneBuilder build(scene);
+  build.polygon(placed(points, 0), build.material(Material{}), Origin{});
+  const PolygonEdgeIndex& index = scene.polygonEdgeIndices.at(0);
+  for (int i = 0; i < 1000; ++i) {
+    const glm::dvec2 q = inSquare(rng, 1.0);
+    EXPECT_EQ(index.gridAnswer(q.x, q.y), PolygonEdgeIndex::kNearEdge);
+  }
+  expectSameAsEveryEdge(
+      points, 0, 200, [](auto& r) { return inSquare(r); }, rng);
+}
+
 // A regular polygon of 10^6 vertices approximates the disc of radius 1: rays
 // that meet the plane clearly inside the inscribed circle hit it, rays
 // clearly outside the circumscribed one miss, through every BVH and the

@@ -17,6 +17,14 @@
 // for a comb whose teeth all cross one line. (There, a point within rounding
 // of two edges' meeting point may count one crossing differently from the
 // full test; every other answer is the full test's.)
+//
+// Before the tree, a uniform grid over the polygon's projection answers most
+// points in constant time (a gear's 144-gon: most of its area lies away from
+// its teeth). A cell that no edge comes within a margin of lies wholly inside
+// or wholly outside, and is classified once when the index is built; a point
+// in such a cell gets that answer, every other point goes to the tree. Why
+// that answer is the full test's, bit for bit: polygon_edges.cpp, above
+// markNearEdges.
 #pragma once
 
 #include "core/math/math.h"
@@ -51,9 +59,22 @@ public:
   bool contains(const Vec3* vertices, std::uint32_t vertexCount, int uAxis, int vAxis, double qu,
                 double qv) const;
 
+  // The grid's answer for the point (qu, qv): kInside or kOutside where it
+  // knows, kNearEdge where the tree must decide (near an edge, or outside the
+  // grid). contains() asks it first; public for the tests.
+  enum GridAnswer : std::uint8_t { kNearEdge = 0, kInside = 1, kOutside = 2 };
+  GridAnswer gridAnswer(double qu, double qv) const;
+
   std::size_t memoryBytes() const;
 
 private:
+  bool treeContains(const Vec3* vertices, std::uint32_t vertexCount, int uAxis, int vAxis,
+                    double qu, double qv) const;
+  void buildGrid(std::span<const Vec3> vertices, int uAxis, int vAxis);
+  // The cell column of u (row of v, with the v members), or -1 outside the grid.
+  std::int32_t column(double qu) const;
+  std::int32_t row(double qv) const;
+
   // A segment tree in the compact layout: leaf k (the slab between the k-th
   // and the next distinct v) is node leaves_ + k, node i's children are 2i
   // and 2i + 1, and a point's nodes are its leaf and the leaf's ancestors.
@@ -62,6 +83,12 @@ private:
   std::vector<std::uint8_t> ordered_; // 1: node i's edges run left to right
   std::vector<std::uint32_t> edges_;  // edge i runs from vertex i - 1 (n - 1 for 0) to i
   std::uint32_t leaves_ = 0;
+
+  // The grid: columns_ x rows_ cells over the projection's box, from (u0_, v0_),
+  // cell (i, j) at cells_[j * columns_ + i]; empty when the box is flat.
+  std::vector<GridAnswer> cells_;
+  double u0_ = 0.0, v0_ = 0.0, uScale_ = 0.0, vScale_ = 0.0; // cells per unit
+  std::int32_t columns_ = 0, rows_ = 0;
 };
 
 } // namespace prism

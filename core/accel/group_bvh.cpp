@@ -5,9 +5,9 @@
 namespace prism {
 
 namespace {
-constexpr std::size_t kLeafSize = 4;    // primitives a node tests directly
-constexpr std::size_t kMaxChildren = 8; // wider groups get a tree over their sub-groups
-constexpr std::size_t kLocalStack = 64; // traversal stack kept on the machine stack
+constexpr std::size_t kLeafSize = 4;         // primitives a node tests directly
+constexpr std::size_t kMaxChildren = 8;      // wider groups get a tree over their sub-groups
+constexpr std::size_t kGroupLocalStack = 64; // traversal stack kept on the machine stack
 
 int longestAxis(const Vec3& extent) {
   return extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
@@ -136,10 +136,10 @@ bool GroupBvh::traverse(const Ray& ray, Interval range, const PrimitiveRef* skip
   if (!isFinite(ray)) return false;
   const Vec3 invDir = 1.0 / ray.dir;
   const double slack = boxSlack(ray);
-  std::uint32_t local[kLocalStack];
+  std::uint32_t local[kGroupLocalStack];
   std::vector<std::uint32_t> heap; // only for pathologically deep nesting
   std::uint32_t* stack = local;
-  if (stackNeed_ > kLocalStack) {
+  if (stackNeed_ > kGroupLocalStack) {
     heap.resize(stackNeed_);
     stack = heap.data();
   }

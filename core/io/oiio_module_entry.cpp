@@ -1,22 +1,12 @@
 // The picture-writing half of libprism_oiio.so (core/io/oiio_module.h): the
 // only code of the core that includes OpenImageIO. Built into the module, not
 // into prism_core.
+#include "core/io/module_error.h"
 #include "core/io/oiio_module.h"
 
 #include <OpenImageIO/imageio.h>
 
-#include <cstring>
 #include <string>
-
-namespace {
-
-void setError(char* error, std::size_t size, const std::string& why) {
-  if (!error || size == 0) return;
-  std::strncpy(error, why.c_str(), size - 1);
-  error[size - 1] = '\0';
-}
-
-} // namespace
 
 extern "C" __attribute__((visibility("default"))) int prism_oiio_supports(const char* formatPath) {
   if (OIIO::ImageOutput::create(formatPath)) return 1;
@@ -31,7 +21,7 @@ prism_oiio_write(const char* formatPath, const char* filePath, int width, int he
   auto out = OIIO::ImageOutput::create(formatPath);
   if (!out) {
     const std::string why = OIIO::geterror();
-    setError(error, errorSize, why.empty() ? "unknown image format" : why);
+    prism::copyModuleError(error, errorSize, why.empty() ? "unknown image format" : why);
     return 0;
   }
   OIIO::ImageSpec spec(width, height, 3, type);
@@ -39,17 +29,17 @@ prism_oiio_write(const char* formatPath, const char* filePath, int width, int he
   spec.attribute("Software", "Prism");
   if (description && *description) spec.attribute("ImageDescription", description);
   if (!out->open(filePath, spec)) {
-    setError(error, errorSize, out->geterror());
+    prism::copyModuleError(error, errorSize, out->geterror());
     return 0;
   }
   if (!out->write_image(type, pixels)) {
     const std::string why = out->geterror();
     out->close();
-    setError(error, errorSize, why);
+    prism::copyModuleError(error, errorSize, why);
     return 0;
   }
   if (!out->close()) {
-    setError(error, errorSize, out->geterror());
+    prism::copyModuleError(error, errorSize, out->geterror());
     return 0;
   }
   return 1;

@@ -5,6 +5,7 @@
 // footprint it is given. Decoding before the TextureSystem sees the pixels is
 // what makes its filters average light rather than sRGB code values: the
 // TextureSystem of OpenImageIO 2.4 has no colour conversion of its own.
+#include "core/io/module_error.h"
 #include "core/io/oiio_module.h"
 #include "core/texture/srgb.h"
 
@@ -92,12 +93,6 @@ struct Library {
   std::vector<OIIO::TextureSystem::TextureHandle*> handles;
 };
 
-void setError(char* error, std::size_t size, const std::string& why) {
-  if (!error || size == 0) return;
-  std::strncpy(error, why.c_str(), size - 1);
-  error[size - 1] = '\0';
-}
-
 bool floatingPoint(OIIO::TypeDesc format) {
   return format.basetype == OIIO::TypeDesc::FLOAT || format.basetype == OIIO::TypeDesc::HALF ||
          format.basetype == OIIO::TypeDesc::DOUBLE;
@@ -181,7 +176,7 @@ prism_oiio_texture_load(void* handle, const char* path, int encoding, prism::Pri
   auto image = std::make_unique<LinearImage>();
   bool srgb = false;
   if (const std::string why = readLinear(path, encoding, *image, srgb); !why.empty()) {
-    setError(error, errorSize, why);
+    prism::copyModuleError(error, errorSize, why);
     return -1;
   }
   info->width = image->width;
@@ -208,7 +203,7 @@ prism_oiio_texture_load(void* handle, const char* path, int encoding, prism::Pri
     textures->imagecache()->invalidate(name, true);
     library->images.pop_back();
     const std::string why = textures->geterror();
-    setError(error, errorSize, why.empty() ? "the texture system refused it" : why);
+    prism::copyModuleError(error, errorSize, why.empty() ? "the texture system refused it" : why);
     return -1;
   }
   library->names.push_back(name);

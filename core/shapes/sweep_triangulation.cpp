@@ -9,8 +9,6 @@ namespace prism {
 
 namespace {
 
-using Triangle = Triangle2;
-
 // The sweep line triangulation of a counterclockwise polygon without repeats
 // of a vertex right after itself.
 //
@@ -47,7 +45,7 @@ public:
       : p_(std::move(polygon)), original_(std::move(original)), m_(std::uint32_t(p_.size())) {}
 
   struct Result {
-    std::vector<Triangle> triangles;
+    std::vector<Triangle2> triangles;
     bool simple = true;    // no edges met, no vertex repeated
     bool certified = true; // the triangles provably tile the polygon
   };
@@ -72,7 +70,7 @@ public:
     triangulatePieces(result.triangles);
     result.simple = simple_;
     result.certified = consistent_ && result.triangles.size() == m_ - 2 && tiles(result.triangles);
-    for (Triangle& t : result.triangles)
+    for (Triangle2& t : result.triangles)
       for (std::uint32_t& corner : t)
         corner = original_[corner];
     return result;
@@ -367,7 +365,7 @@ private:
     }
   }
 
-  void triangulatePieces(std::vector<Triangle>& out) {
+  void triangulatePieces(std::vector<Triangle2>& out) {
     std::vector<char> seen(next_.size(), 0);
     std::vector<std::uint32_t> piece;
     for (std::uint32_t start = 0; start < next_.size(); ++start) {
@@ -389,7 +387,7 @@ private:
 
   // One y-monotone piece (its corners in order): its two chains from the top
   // corner down, merged by height, then cut from the top down.
-  void triangulateMonotone(const std::vector<std::uint32_t>& piece, std::vector<Triangle>& out) {
+  void triangulateMonotone(const std::vector<std::uint32_t>& piece, std::vector<Triangle2>& out) {
     const std::size_t n = piece.size();
     auto rankAt = [&](std::size_t i) { return rank_[vertexOf_[piece[i]]]; };
     std::size_t top = 0, bottom = 0;
@@ -428,8 +426,8 @@ private:
         for (std::size_t k = stack_.size() - 1; k > 0; --k) {
           const std::uint32_t lowerCorner = sorted_[stack_[k]].vertex;
           const std::uint32_t upperCorner = sorted_[stack_[k - 1]].vertex;
-          out.push_back(chain == Chain::Left ? Triangle{vj, lowerCorner, upperCorner}
-                                             : Triangle{vj, upperCorner, lowerCorner});
+          out.push_back(chain == Chain::Left ? Triangle2{vj, lowerCorner, upperCorner}
+                                             : Triangle2{vj, upperCorner, lowerCorner});
         }
         stack_.assign({j - 1, j});
         continue;
@@ -440,7 +438,7 @@ private:
       while (!stack_.empty()) {
         const std::uint32_t mid = sorted_[last].vertex;
         const std::uint32_t up = sorted_[stack_.back()].vertex;
-        const Triangle t = chain == Chain::Left ? Triangle{up, mid, vj} : Triangle{vj, mid, up};
+        const Triangle2 t = chain == Chain::Left ? Triangle2{up, mid, vj} : Triangle2{vj, mid, up};
         if (!(cross2(p_[t[0]], p_[t[1]], p_[t[2]]) > 0.0)) break;
         out.push_back(t);
         last = stack_.back();
@@ -454,8 +452,8 @@ private:
     for (std::size_t k = stack_.size() - 1; k > 0; --k) {
       const std::uint32_t lowerCorner = sorted_[stack_[k]].vertex;
       const std::uint32_t upperCorner = sorted_[stack_[k - 1]].vertex;
-      out.push_back(chain == Chain::Left ? Triangle{bottomVertex, upperCorner, lowerCorner}
-                                         : Triangle{bottomVertex, lowerCorner, upperCorner});
+      out.push_back(chain == Chain::Left ? Triangle2{bottomVertex, upperCorner, lowerCorner}
+                                         : Triangle2{bottomVertex, lowerCorner, upperCorner});
     }
   }
 
@@ -465,9 +463,9 @@ private:
   // along it, sharing each inner edge once each way, so with signs they sum
   // to the polygon's area whatever their shapes, and when none turns
   // clockwise beyond round-off they cover it exactly once.
-  bool tiles(const std::vector<Triangle>& triangles) const {
+  bool tiles(const std::vector<Triangle2>& triangles) const {
     double signedSum = 0.0, absoluteSum = 0.0;
-    for (const Triangle& t : triangles) {
+    for (const Triangle2& t : triangles) {
       const double a = cross2(p_[t[0]], p_[t[1]], p_[t[2]]);
       signedSum += a;
       absoluteSum += std::abs(a);

@@ -9,8 +9,6 @@ namespace prism {
 
 namespace {
 
-using Triangle = Triangle2;
-
 // Beyond this many vertices the sweep's pieces (at most 3 n corners) could
 // overflow 32-bit indices.
 constexpr std::size_t kMaxVertices = std::size_t(1) << 30;
@@ -49,8 +47,8 @@ double twiceArea(const std::vector<P2>& p) {
   return sum;
 }
 
-std::vector<Triangle> fan(std::size_t n) {
-  std::vector<Triangle> out;
+std::vector<Triangle2> fan(std::size_t n) {
+  std::vector<Triangle2> out;
   for (std::uint32_t i = 1; i + 1 < n; ++i)
     out.push_back({0, i, i + 1});
   return out;
@@ -84,7 +82,7 @@ bool windsOnce(const std::vector<P2>& p) {
 // Ear clipping, O(n^2) to O(n^3): only for small polygons (see
 // kEarClippingLimit). False when it finds no ear before the end, which a
 // polygon that is not simple or has collinear corners in the way can cause.
-bool earClip(const std::vector<P2>& p, std::vector<Triangle>& out) {
+bool earClip(const std::vector<P2>& p, std::vector<Triangle2>& out) {
   const std::size_t n = p.size();
   std::vector<std::uint32_t> ring(n);
   for (std::uint32_t i = 0; i < n; ++i)
@@ -171,7 +169,7 @@ Triangulation triangulatePolygon(std::span<const Vec3> points, std::size_t earCl
   SweepResult swept = sweepTriangulate(std::move(kept), std::move(original));
   result.simple = area2 > 0.0 && !repeats && swept.simple && swept.certified;
   if (n <= earClippingLimit) {
-    std::vector<Triangle> clipped;
+    std::vector<Triangle2> clipped;
     if (earClip(p, clipped)) {
       // Ear clipping needs no certificate: each ear it cuts off is empty.
       result.triangles = std::move(clipped);

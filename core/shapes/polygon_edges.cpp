@@ -196,7 +196,7 @@ void PolygonEdgeIndex::buildGrid(std::span<const Vec3> vertices, int uAxis, int 
         ++end;
       const double qu = u0_ + 0.5 * (i + end) / uScale_, qv = v0_ + (j + 0.5) / vScale_;
       GridAnswer answer = kNearEdge;
-      if (column(qu) >= i && column(qu) < end && row(qv) == j) {
+      if (const std::int32_t c = column(qu); c >= i && c < end && row(qv) == j) {
         answer = treeContains(v, n, uAxis, vAxis, qu, qv) ? kInside : kOutside;
         anyClassified = true;
       }

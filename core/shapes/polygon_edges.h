@@ -24,7 +24,7 @@
 // or wholly outside, and is classified once when the index is built; a point
 // in such a cell gets that answer, every other point goes to the tree. Why
 // that answer is the full test's, bit for bit: polygon_edges.cpp, above
-// markNearEdges.
+// buildGrid.
 #pragma once
 
 #include "core/math/math.h"
@@ -85,7 +85,9 @@ private:
   std::uint32_t leaves_ = 0;
 
   // The grid: columns_ x rows_ cells over the projection's box, from (u0_, v0_),
-  // cell (i, j) at cells_[j * columns_ + i]; empty when the box is flat.
+  // cell (i, j) at cells_[j * columns_ + i]; empty when the polygon has no
+  // grid (a flat box, cells too small for the margin, too much marking, or no
+  // cell classified: see buildGrid).
   std::vector<GridAnswer> cells_;
   double u0_ = 0.0, v0_ = 0.0, uScale_ = 0.0, vScale_ = 0.0; // cells per unit
   std::int32_t columns_ = 0, rows_ = 0;

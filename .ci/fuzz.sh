@@ -34,9 +34,11 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 started=$SECONDS
 
 echo "== Configure and build the fuzz targets in $build (clang-14)"
-cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Debug \
-  -DPRISM_BUILD_FUZZERS=ON -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_VIEWER=OFF >/dev/null
-cmake --build "$build" --target fuzzers -j"$(nproc)"
+# CMAKE_UNITY_BUILD: the instrumented core compiled in batches of files,
+# as in CI's sanitizer build (.ci/test.sh).
+bash "$root/.ci/build.sh" "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Debug \
+  -DPRISM_BUILD_FUZZERS=ON -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_VIEWER=OFF -DCMAKE_UNITY_BUILD=ON \
+  -- --target fuzzers
 echo "build: $((SECONDS - started)) s"
 
 # Prints what a failed run left: libFuzzer's report, then each reproducer.

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake make pkg-config       # toolchain
+  g++ cmake make ninja-build pkg-config  # toolchain
   libglm-dev                        # vector math
   libtiff-dev libpng-dev            # 8-bit TIFF and PNG, written directly (core/io/image_io.cpp)
   libopenimageio-dev openimageio-tools  # other image files, in the module libprism_oiio.so (and oiiotool for comparisons)

@@ -21,7 +21,7 @@ namespace {
 // async-signal-safe functions (unlink, raise) and read lock-free atomics, so
 // the list is a fixed array of fixed buffers: a slot is claimed, its path
 // written, then published; the handler reads published slots only.
-constexpr std::size_t kSlots = 64;
+constexpr std::size_t kPendingSlots = 64;
 constexpr std::size_t kMaxPath = 4096;
 
 struct Slot {
@@ -29,15 +29,15 @@ struct Slot {
   std::atomic<bool> published{false};
   char path[kMaxPath];
 };
-std::array<Slot, kSlots> gSlots;
+std::array<Slot, kPendingSlots> gSlots;
 static_assert(std::atomic<bool>::is_always_lock_free);
 
-// A file that does not fit (a very long path, or more than kSlots at once) is
+// A file that does not fit (a very long path, or more than kPendingSlots at once) is
 // still removed on every error path; only a signal would leave it.
 int publish(const fs::path& path) {
   const std::string& text = path.native();
   if (text.size() >= kMaxPath) return -1;
-  for (std::size_t i = 0; i < kSlots; ++i) {
+  for (std::size_t i = 0; i < kPendingSlots; ++i) {
     bool expected = false;
     if (!gSlots[i].claimed.compare_exchange_strong(expected, true)) continue;
     std::memcpy(gSlots[i].path, text.c_str(), text.size() + 1);

@@ -8,13 +8,15 @@
 
 namespace prism {
 
-namespace {
-
 // Where a new ray may start: the hit point moved off the surface to one side.
+// Not in the anonymous namespace: Tracer::Incidence, a member of a class with
+// external linkage, holds one.
 struct SurfaceFrame {
   Vec3 above; // on the side the incoming ray came from
   Vec3 below; // on the far side (for refraction)
 };
+
+namespace {
 
 // `scale` is the primitive's SurfacePoint::roundoffScale. The offset is at
 // least 512 u of the point's largest coordinate, a few hundred of its ulps, so

@@ -4,15 +4,30 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace prism {
 
 // An option whose value must lie in [min, max], its default shown in --help.
+// Not a number is outside every range: CLI::Range alone lets "nan" through,
+// since every comparison with NaN is false.
 template <class T, class Bound>
 CLI::Option* addRangedOption(CLI::App& command, const std::string& name, T& value,
                              const std::string& help, Bound min, Bound max) {
-  return command.add_option(name, value, help)->capture_default_str()->check(CLI::Range(min, max));
+  CLI::Option* option =
+      command.add_option(name, value, help)->capture_default_str()->check(CLI::Range(min, max));
+  if constexpr (std::is_floating_point_v<T>)
+    option->check(CLI::Validator(
+        [](std::string& text) {
+          T parsed{};
+          return CLI::detail::lexical_cast(text, parsed) && std::isnan(parsed)
+                     ? "Value " + text + " is not a number"
+                     : std::string();
+        },
+        ""));
+  return option;
 }
 
 // The scene file every rendering command takes first. `orStdin`: "-" is

@@ -99,6 +99,7 @@ nlohmann::ordered_json summaryJson(const SweepCommandOptions& o, const Reference
         {"cpu_s", reference.cpuSeconds},
         {"wall_s", reference.wallSeconds}}},
       {"settings", rows.size()},
+      {"min_timed_seconds", o.minSeconds},
       {"cpu_s", cpuSeconds},
       {"wall_s", wallSeconds},
   };
@@ -152,6 +153,11 @@ CLI::App* addSweepCommand(CLI::App& app, SweepCommandOptions& o) {
                         " pixels on the longer side");
   addRangedOption(*command, "--threads", o.threads,
                   "Render threads (0: every core this process may use)", 0, 1024);
+  addRangedOption(*command, "--min-seconds", o.minSeconds,
+                  "Time each setting over repeated runs until they add up to this much CPU (at "
+                  "most " +
+                      std::to_string(kSweepMaxRuns) + " runs; 0: one run each)",
+                  0.0, 3600.0);
   command->add_flag("-q,--quiet", o.quiet, "No progress and no summary on stderr");
   return command;
 }
@@ -198,6 +204,8 @@ int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
   referenceSettings.width = width;
   referenceSettings.height = height;
   ReferencePicture reference;
+  SweepGrid grid;
+  grid.minTimedSeconds = o.minSeconds;
   std::vector<SweepRow> rows;
   int groupsHere = 0;
   {
@@ -218,7 +226,7 @@ int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
     });
     if (group) {
       DistributedSweep sweep = runSweepOverGroup(
-          *group, scene, *accel, SweepGrid{}, reference, executor, [&](int done, int total) {
+          *group, scene, *accel, grid, reference, executor, [&](int done, int total) {
             reporter.show([&](double elapsed) {
               return distributedSweepLine(done, total, group->size(), elapsed);
             });
@@ -226,7 +234,7 @@ int runSweepCommand(const SweepCommandOptions& o, ProcessGroup* group) {
       rows = std::move(sweep.rows);
       groupsHere = sweep.groupsHere;
     } else {
-      rows = runSweep(scene, *accel, SweepGrid{}, reference, executor, [&](const SweepProgress& p) {
+      rows = runSweep(scene, *accel, grid, reference, executor, [&](const SweepProgress& p) {
         reporter.show([&](double elapsed) { return sweepLine(p, elapsed); });
       });
     }

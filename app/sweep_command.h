@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/render/process_group.h"
+#include "core/sweep/sweep_runner.h"
 
 #include <string>
 #include <vector>
@@ -17,11 +18,12 @@ namespace prism {
 
 struct SweepCommandOptions {
   std::string scene;
-  std::string output;    // the folder of the results (created if missing)
-  std::vector<int> size; // W H, overriding the scene's resolution
-  bool quick = false;    // the scene's picture at 128 pixels on its longer side
-  int threads = 0;       // 0: all cores
-  bool quiet = false;    // no progress and no summary on stderr
+  std::string output;                        // the folder of the results (created if missing)
+  std::vector<int> size;                     // W H, overriding the scene's resolution
+  bool quick = false;                        // the scene's picture at 128 pixels on its longer side
+  int threads = 0;                           // 0: all cores
+  bool quiet = false;                        // no progress and no summary on stderr
+  double minSeconds = kSweepMinTimedSeconds; // SweepGrid::minTimedSeconds
 };
 
 // The --quick size: the scene's aspect at 128 pixels on the longer side.

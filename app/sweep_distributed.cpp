@@ -32,8 +32,9 @@ DistributedSweep runSweepOverGroup(ProcessGroup& group, const Scene& scene, cons
       [&](int item) {
         const auto [first, last] = groupOf(item);
         ++result.groupsHere;
-        return formatSweepCsv(runSweepGroup(
-            scene, accel, std::span(settings).subspan(first, last - first), reference, executor));
+        return formatSweepCsv(runSweepGroup(scene, accel,
+                                            std::span(settings).subspan(first, last - first),
+                                            reference, executor, {}, grid.minTimedSeconds));
       },
       progress);
   if (texts.empty()) return result; // not rank 0

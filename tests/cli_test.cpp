@@ -61,6 +61,8 @@ TEST_F(Cli, UsageErrorsExitWith2) {
   EXPECT_EQ(prism("render " + s + " -o " + out + " --depth 0").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh 1.5").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh -0.1").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh nan").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --bailout nan").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --size 0 10").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --accel fast").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --bailout -0.5").exitCode, 2);

@@ -160,15 +160,16 @@ protected:
   }
 
   // `prism sweep` at 8 x 6 on one thread a process (the processes of a job
-  // share this machine's two cores), under `launcher`. Every process renders
-  // the whole reference, most of a sweep's work: at 16 x 12 the two job tests
-  // took 40 s and 48 s under the sanitizers. At 8 x 6 the sweep still has
-  // supersampled pixels and reflected rays in nearly every row.
+  // share this machine's two cores), under `launcher`, each setting rendered
+  // once (--min-seconds 0: the times are not compared). At 16 x 12, each
+  // setting timed over 16 runs, the two job tests took 40 s and 48 s under
+  // the sanitizers. At 8 x 6 the sweep still has supersampled pixels and
+  // reflected rays in nearly every row.
   // `scene` as a shell word.
   static std::string sweepCommand(const std::string& launcher, const std::string& scene,
                                   const fs::path& out, const std::string& more = "") {
     return launcher + quoted(PRISM_BINARY) + " sweep " + scene + " -o " + quoted(out) +
-           " --size 8 6 --threads 1" + more;
+           " --size 8 6 --threads 1 --min-seconds 0" + more;
   }
 
   RunResult run(const std::string& command) { return test::runCaptured(command, dir_); }

@@ -21,6 +21,7 @@
 #include "test_files.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -529,6 +530,61 @@ TEST(RunSweep, EveryRowIsWhatAPlainRenderOfItsSettingGives) {
   EXPECT_DOUBLE_EQ(progress.back().fraction, 1.0);
 }
 
+// Passes every query on and counts them: the bundles of eye rays reach
+// closestHit through Accel's own closestHits.
+class CountingAccel final : public Accel {
+public:
+  explicit CountingAccel(const Accel& inner) : inner_(inner) {}
+  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+                  Hit& hit) const override {
+    ++queries;
+    return inner_.closestHit(ray, range, skip, hit);
+  }
+  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
+              PrimitiveRef* blocker = nullptr) const override {
+    ++queries;
+    return inner_.anyHit(ray, range, skip, blocker);
+  }
+  std::size_t memoryBytes() const override { return inner_.memoryBytes(); }
+  mutable std::atomic<long long> queries{0};
+
+private:
+  const Accel& inner_;
+};
+
+// minTimedSeconds 0 renders each setting of a group once; a minimum no run
+// reaches renders each kSweepMaxRuns times: the hierarchy is asked exactly
+// that many times the queries, and the rows are the same but for the times.
+TEST(Sweep, MinTimedSecondsDecidesHowOftenEachSettingIsRendered) {
+  const Scene scene = parseScene(kFacingMirrors, "mirrors.sc");
+  const auto bvh = makeAccel(scene, AccelKind::Bvh);
+  ThreadPoolExecutor executor(2);
+  ReferenceSettings referenceSettings;
+  referenceSettings.width = 8;
+  referenceSettings.height = 6;
+  referenceSettings.lastDepth = 12;
+  const ReferencePicture reference = renderReference(scene, *bvh, referenceSettings, executor);
+  SweepGrid grid;
+  grid.depths = {3};
+  grid.bailouts = {0.0};
+  const std::vector<SweepSetting> settings = grid.settings();
+
+  const CountingAccel once(*bvh), often(*bvh);
+  const std::vector<SweepRow> onceRows =
+      runSweepGroup(scene, once, settings, reference, executor, {}, 0.0);
+  const std::vector<SweepRow> oftenRows =
+      runSweepGroup(scene, often, settings, reference, executor, {}, 1e9);
+  ASSERT_GT(once.queries.load(), 0);
+  EXPECT_EQ(often.queries.load(), kSweepMaxRuns * once.queries.load());
+  ASSERT_EQ(onceRows.size(), settings.size());
+  ASSERT_EQ(oftenRows.size(), settings.size());
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    SweepRow a = onceRows[i], b = oftenRows[i];
+    a.cpuSeconds = b.cpuSeconds = a.wallSeconds = b.wallSeconds = 0.0;
+    EXPECT_EQ(formatSweepCsv({a}), formatSweepCsv({b})) << settingOptions(settings[i]);
+  }
+}
+
 // ------------------------------------------------------------------ the command
 
 class SweepCli : public ::testing::Test {
@@ -558,8 +614,10 @@ polygon 4  -5 -1 -5  5 -1 -5  5 -1 5  -5 -1 5
 TEST_F(SweepCli, WritesTheTableTheSummaryTheReferenceAndThePlots) {
   const fs::path scene = write("small.sc", kSmallScene);
   const fs::path out = dir_ / "results";
-  const test::RunResult run =
-      prism("sweep " + test::quoted(scene) + " -o " + test::quoted(out) + " --size 16 12 -q");
+  // --min-seconds 0: each setting rendered once (16 times each otherwise, at
+  // this size); nothing below depends on how steady the times are.
+  const test::RunResult run = prism("sweep " + test::quoted(scene) + " -o " + test::quoted(out) +
+                                    " --size 16 12 --min-seconds 0 -q");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_EQ(run.err, ""); // -q: no progress, no summary
 
@@ -582,6 +640,7 @@ TEST_F(SweepCli, WritesTheTableTheSummaryTheReferenceAndThePlots) {
   EXPECT_EQ(json.at("width"), 16);
   EXPECT_EQ(json.at("height"), 12);
   EXPECT_EQ(json.at("settings"), 408);
+  EXPECT_EQ(json.at("min_timed_seconds"), 0.0);
   EXPECT_GE(json.at("threads").get<int>(), 1);
   const auto& reference = json.at("reference");
   EXPECT_EQ(reference.at("samples_per_pixel"), 64);
@@ -622,6 +681,18 @@ TEST_F(SweepCli, SceneErrorExitsWith2AndWritesNoTable) {
   EXPECT_FALSE(fs::exists(out / "sweep.csv"));
   EXPECT_FALSE(fs::exists(out / "sweep.json"));
   EXPECT_FALSE(fs::exists(out / "reference.png"));
+}
+
+TEST_F(SweepCli, NegativeOrNonNumericMinSecondsExitWith2) {
+  const fs::path scene = write("small.sc", kSmallScene);
+  for (const char* value : {"-1", "nan", "fast", "3601"}) {
+    const fs::path out = dir_ / "results";
+    const test::RunResult run = prism("sweep " + test::quoted(scene) + " -o " + test::quoted(out) +
+                                      " --min-seconds " + value + " -q");
+    EXPECT_EQ(run.exitCode, 2) << value;
+    EXPECT_NE(run.err.find("--min-seconds"), std::string::npos) << value << ": " << run.err;
+    EXPECT_FALSE(fs::exists(out / "sweep.csv")) << value;
+  }
 }
 
 TEST_F(SweepCli, OutputThatIsAFileExitsWith1) {

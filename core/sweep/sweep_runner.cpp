@@ -34,17 +34,13 @@ RenderSettings renderSettingsOf(const SweepSetting& setting, int width, int heig
   return settings;
 }
 
-// A run this short is timed as the mean of several: CPU time is accounted in
-// scheduler ticks, and a single 5 ms run would put the noise of a tick into
-// the Pareto front. The pictures are the same each time.
-constexpr double kMinTimedSeconds = 0.05;
-constexpr int kMaxRepeats = 16;
-
-TimedRun timedMean(const std::function<TimedRun()>& once) {
+// A run shorter than `minSeconds` is timed as the mean of several
+// (sweep_runner.h). The pictures are the same each time.
+TimedRun timedMean(const std::function<TimedRun()>& once, double minSeconds) {
   TimedRun run = once();
   double cpu = run.cpuSeconds, wall = run.wallSeconds;
   int runs = 1;
-  for (; cpu < kMinTimedSeconds && runs < kMaxRepeats; ++runs) {
+  for (; cpu < minSeconds && runs < kSweepMaxRuns; ++runs) {
     const TimedRun again = once();
     cpu += again.cpuSeconds;
     wall += again.wallSeconds;
@@ -121,7 +117,8 @@ passOneGroups(const std::vector<SweepSetting>& settings) {
 std::vector<SweepRow> runSweepGroup(const Scene& scene, const Accel& accel,
                                     std::span<const SweepSetting> group,
                                     const ReferencePicture& reference, Executor& executor,
-                                    const std::function<void(std::size_t index)>& starting) {
+                                    const std::function<void(std::size_t index)>& starting,
+                                    double minTimedSeconds) {
   const int width = reference.width, height = reference.height;
   const double pixels = double(width) * double(height);
   std::vector<SweepRow> rows;
@@ -134,10 +131,12 @@ std::vector<SweepRow> runSweepGroup(const Scene& scene, const Accel& accel,
   // Pass 1 of this depth and bailout, which every setting of the group has.
   SweepSetting centresOnly = group.front();
   centresOnly.antialias = false;
-  const TimedRun pass1 = timedMean([&] {
-    return runTimed(scene, accel, renderSettingsOf(centresOnly, width, height), executor,
-                    Film(width, height), Pass1::Trace);
-  });
+  const TimedRun pass1 = timedMean(
+      [&] {
+        return runTimed(scene, accel, renderSettingsOf(centresOnly, width, height), executor,
+                        Film(width, height), Pass1::Trace);
+      },
+      minTimedSeconds);
 
   for (std::size_t i = 0; i < group.size(); ++i) {
     const SweepSetting& setting = group[i];
@@ -150,10 +149,12 @@ std::vector<SweepRow> runSweepGroup(const Scene& scene, const Accel& accel,
     row.cpuSeconds = pass1.cpuSeconds;
     row.wallSeconds = pass1.wallSeconds;
     if (setting.antialias) {
-      pass2 = timedMean([&] {
-        return runTimed(scene, accel, renderSettingsOf(setting, width, height), executor,
-                        pass1.film, Pass1::Keep);
-      });
+      pass2 = timedMean(
+          [&] {
+            return runTimed(scene, accel, renderSettingsOf(setting, width, height), executor,
+                            pass1.film, Pass1::Keep);
+          },
+          minTimedSeconds);
       counts += pass2.counts;
       row.cpuSeconds += pass2.cpuSeconds;
       row.wallSeconds += pass2.wallSeconds;
@@ -214,9 +215,9 @@ std::vector<SweepRow> runSweep(const Scene& scene, const Accel& accel, const Swe
     // `first`, which Clang before 16 does not allow of a binding.
     const std::size_t first = groups[g].first, last = groups[g].second;
     report(g, first);
-    const std::vector<SweepRow> groupRows =
-        runSweepGroup(scene, accel, std::span(settings).subspan(first, last - first), reference,
-                      executor, [&](std::size_t i) { report(g, first + i); });
+    const std::vector<SweepRow> groupRows = runSweepGroup(
+        scene, accel, std::span(settings).subspan(first, last - first), reference, executor,
+        [&](std::size_t i) { report(g, first + i); }, grid.minTimedSeconds);
     rows.insert(rows.end(), groupRows.begin(), groupRows.end());
     estimate.measured(
         settings[first].depth,

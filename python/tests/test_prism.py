@@ -410,6 +410,14 @@ class ProgressTest(unittest.TestCase):
     # 256 x 256 is 64 tiles of 32 x 32 a pass; one thread renders them in turn.
     OPTIONS = {"width": 256, "height": 256, "threads": 1}
 
+    def setUp(self):
+        # Python turns SIGINT into KeyboardInterrupt only if SIGINT was not
+        # ignored when it started, and a shell's background job (`... &`)
+        # starts with it ignored: the Ctrl-C tests then failed. Set the
+        # handler for the length of each test.
+        self._sigint = signal.signal(signal.SIGINT, signal.default_int_handler)
+        self.addCleanup(signal.signal, signal.SIGINT, self._sigint)
+
     def test_progress_rises_to_the_whole_on_the_calling_thread(self):
         calls = []
         prism.render(prism.parse(WALL), progress=lambda p, f: calls.append(

@@ -4,6 +4,7 @@
 #include "core/render/renderer.h"
 #include "core/render/tracer.h"
 #include "core/scene/camera.h"
+#include "counting_accel.h"
 
 #include <gtest/gtest.h>
 
@@ -66,26 +67,6 @@ TEST(Determinism, BvhAndGroupsGiveTheSamePictureOfEveryShippedScene) {
   }
 }
 
-// Passes every query on and counts the shadow queries (any-hit) it is asked.
-class CountingAccel final : public Accel {
-public:
-  explicit CountingAccel(const Accel& inner) : inner_(inner) {}
-  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                  Hit& hit) const override {
-    return inner_.closestHit(ray, range, skip, hit);
-  }
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-              PrimitiveRef* blocker = nullptr) const override {
-    ++anyHits;
-    return inner_.anyHit(ray, range, skip, blocker);
-  }
-  std::size_t memoryBytes() const override { return inner_.memoryBytes(); }
-  mutable long long anyHits = 0;
-
-private:
-  const Accel& inner_;
-};
-
 class BlockerCache : public ::testing::TestWithParam<const char*> {};
 
 // The tracer's memory of the last shadow blocker answers some shadow rays
@@ -93,7 +74,7 @@ class BlockerCache : public ::testing::TestWithParam<const char*> {};
 TEST_P(BlockerCache, SameRadianceAndCountsWithFewerAccelQueries) {
   const Scene scene = loadScene(std::string(PRISM_SOURCE_DIR) + "/scenes/" + GetParam());
   const auto bvh = makeAccel(scene, AccelKind::Bvh);
-  const CountingAccel cached(*bvh), uncached(*bvh);
+  const test::CountingAccel cached(*bvh), uncached(*bvh);
   const int depth = 6;
   Tracer withCache(scene, cached, depth, Tracer::BlockerCache::On);
   Tracer without(scene, uncached, depth, Tracer::BlockerCache::Off);
@@ -108,9 +89,9 @@ TEST_P(BlockerCache, SameRadianceAndCountsWithFewerAccelQueries) {
   EXPECT_EQ(differing, 0);
   EXPECT_EQ(countsWith, countsWithout);
   // Every shadow ray reaches the Accel without the cache; with it, fewer do.
-  EXPECT_EQ(uncached.anyHits, countsWithout.shadow);
+  EXPECT_EQ(uncached.anyHits.load(), (long long)countsWithout.shadow);
   EXPECT_GT(countsWithout.shadow, 1000);
-  EXPECT_LT(cached.anyHits, uncached.anyHits);
+  EXPECT_LT(cached.anyHits.load(), uncached.anyHits.load());
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, BlockerCache,

@@ -17,11 +17,11 @@
 #include "core/sweep/sweep_runner.h"
 #include "core/sweep/sweep_table.h"
 
+#include "counting_accel.h"
 #include "render_fixtures.h"
 #include "test_files.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -530,28 +530,6 @@ TEST(RunSweep, EveryRowIsWhatAPlainRenderOfItsSettingGives) {
   EXPECT_DOUBLE_EQ(progress.back().fraction, 1.0);
 }
 
-// Passes every query on and counts them: the bundles of eye rays reach
-// closestHit through Accel's own closestHits.
-class CountingAccel final : public Accel {
-public:
-  explicit CountingAccel(const Accel& inner) : inner_(inner) {}
-  bool closestHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-                  Hit& hit) const override {
-    ++queries;
-    return inner_.closestHit(ray, range, skip, hit);
-  }
-  bool anyHit(const Ray& ray, Interval range, const PrimitiveRef* skip,
-              PrimitiveRef* blocker = nullptr) const override {
-    ++queries;
-    return inner_.anyHit(ray, range, skip, blocker);
-  }
-  std::size_t memoryBytes() const override { return inner_.memoryBytes(); }
-  mutable std::atomic<long long> queries{0};
-
-private:
-  const Accel& inner_;
-};
-
 // minTimedSeconds 0 renders each setting of a group once; a minimum no run
 // reaches renders each kSweepMaxRuns times: the hierarchy is asked exactly
 // that many times the queries, and the rows are the same but for the times.
@@ -569,13 +547,13 @@ TEST(Sweep, MinTimedSecondsDecidesHowOftenEachSettingIsRendered) {
   grid.bailouts = {0.0};
   const std::vector<SweepSetting> settings = grid.settings();
 
-  const CountingAccel once(*bvh), often(*bvh);
+  const test::CountingAccel once(*bvh), often(*bvh);
   const std::vector<SweepRow> onceRows =
       runSweepGroup(scene, once, settings, reference, executor, {}, 0.0);
   const std::vector<SweepRow> oftenRows =
       runSweepGroup(scene, often, settings, reference, executor, {}, 1e9);
-  ASSERT_GT(once.queries.load(), 0);
-  EXPECT_EQ(often.queries.load(), kSweepMaxRuns * once.queries.load());
+  ASSERT_GT(once.queries(), 0);
+  EXPECT_EQ(often.queries(), kSweepMaxRuns * once.queries());
   ASSERT_EQ(onceRows.size(), settings.size());
   ASSERT_EQ(oftenRows.size(), settings.size());
   for (std::size_t i = 0; i < settings.size(); ++i) {

@@ -16,8 +16,11 @@ namespace {
 
 using sc::num;
 
-// POV-Ray's vector literal: <x, y, z>.
-std::string vec(const Vec3& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
+// POV-Ray's vector literal: <x, y, z> (named apart from sc::vec, the .sc
+// writer's, which a unity batch may bring into the same file).
+std::string povVector(const Vec3& v) {
+  return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">";
+}
 
 std::string materialName(std::uint32_t index) { return "Prism_M" + std::to_string(index); }
 
@@ -63,13 +66,13 @@ public:
     // which Prism traces (without --bailout).
     out_ << "global_settings { assumed_gamma 1.0 max_trace_level Prism_Depth adc_bailout 0 "
             "ambient_light rgb "
-         << vec(scene_.ambient) << " }\n";
-    out_ << "background { rgb " << vec(scene_.background) << " }\n";
+         << povVector(scene_.ambient) << " }\n";
+    out_ << "background { rgb " << povVector(scene_.background) << " }\n";
     // POV-Ray's constant fog is exp(-d / distance) L + (1 - exp(-d / distance)) C, a
     // ray that meets nothing taking the fog's colour: Prism's fog exactly.
     if (scene_.fog.active())
       out_ << "fog { fog_type 1 distance " << num(1.0 / scene_.fog.density) << " color rgb "
-           << vec(scene_.fog.color) << " }\n";
+           << povVector(scene_.fog.color) << " }\n";
   }
 
   // The vectors of Prism's camera (core/scene/camera.cpp) written out, with
@@ -84,20 +87,21 @@ public:
     const Vec3 right = glm::normalize(glm::cross(forward, c.up));
     const Vec3 up = glm::cross(right, forward);
     const double halfHeight = std::tan(glm::radians(c.fov) * 0.5);
-    out_ << "// Prism camera: eye " << vec(c.eye) << " lookat " << vec(c.lookat) << " up "
-         << vec(c.up) << " fov " << num(c.fov) << " (vertical)\n";
-    out_ << "camera {\n  perspective\n  location " << vec(c.eye) << "\n  direction " << vec(forward)
-         << "\n  right " << vec(right) << " * (" << num(2.0 * halfHeight)
-         << " * image_width / image_height)\n  up " << vec(up) << " * " << num(2.0 * halfHeight)
-         << "\n}\n";
+    out_ << "// Prism camera: eye " << povVector(c.eye) << " lookat " << povVector(c.lookat)
+         << " up " << povVector(c.up) << " fov " << num(c.fov) << " (vertical)\n";
+    out_ << "camera {\n  perspective\n  location " << povVector(c.eye) << "\n  direction "
+         << povVector(forward) << "\n  right " << povVector(right) << " * ("
+         << num(2.0 * halfHeight) << " * image_width / image_height)\n  up " << povVector(up)
+         << " * " << num(2.0 * halfHeight) << "\n}\n";
   }
 
   void lights() {
     const double fade = povFadeDistance(sceneSize(scene_));
     const double scale = povLightScale(fade);
     for (const Light& l : scene_.lights) {
-      out_ << "light_source { " << vec(l.position) << " color rgb " << vec(l.intensity * scale)
-           << " fade_distance " << num(fade) << " fade_power 2 }\n";
+      out_ << "light_source { " << povVector(l.position) << " color rgb "
+           << povVector(l.intensity * scale) << " fade_distance " << num(fade)
+           << " fade_power 2 }\n";
     }
   }
 
@@ -125,7 +129,7 @@ public:
         out_ << "  interior { ior " << num(m.ior);
         if (m.fadeDistance > 0.0)
           out_ << " fade_distance " << num(m.fadeDistance) << " fade_power 1001 fade_color rgb "
-               << vec(m.fadeColor);
+               << povVector(m.fadeColor);
         out_ << " }\n";
       }
       out_ << "}\n";
@@ -220,8 +224,8 @@ private:
   }
 
   void one(const Sphere& s) {
-    out_ << "sphere { " << vec(s.center) << ", " << num(s.radius) << " " << material(s.material)
-         << " }\n";
+    out_ << "sphere { " << povVector(s.center) << ", " << num(s.radius) << " "
+         << material(s.material) << " }\n";
   }
 
   // The unit sphere, carried into place by the ellipsoid's map.
@@ -236,8 +240,8 @@ private:
     const Vec3* v = scene_.polygonVertices.data() + p.firstVertex;
     out_ << "polygon { " << p.vertexCount + 1;
     for (std::uint32_t i = 0; i < p.vertexCount; ++i)
-      out_ << ", " << vec(v[i]);
-    out_ << ", " << vec(v[0]) << " " << material(p.material) << " }\n";
+      out_ << ", " << povVector(v[i]);
+    out_ << ", " << povVector(v[0]) << " " << material(p.material) << " }\n";
   }
 
   // An open cone between its two circles; an elliptic one (the scene
@@ -260,7 +264,8 @@ private:
       out_ << apex << ", " << num(c.apexRadius * unit) << ending;
     };
     if (isCircular(c)) {
-      ends(vec(c.objectToWorldOffset), vec(c.objectToWorldOffset + m[2]), glm::length(m[0]));
+      ends(povVector(c.objectToWorldOffset), povVector(c.objectToWorldOffset + m[2]),
+           glm::length(m[0]));
     } else {
       ends("<0, 0, 0>", "<0, 0, 1>", 1.0);
       out_ << matrix(m, c.objectToWorldOffset) << " ";
@@ -270,7 +275,7 @@ private:
 
   // POV-Ray's box by two corners; one in its own frame carried by its matrix.
   void one(const Box& b) {
-    out_ << "box { " << vec(b.lo) << ", " << vec(b.hi) << " ";
+    out_ << "box { " << povVector(b.lo) << ", " << povVector(b.hi) << " ";
     if (!isWorldAligned(b))
       out_ << matrix(b.frame.objectToWorld, b.frame.objectToWorldOffset) << " ";
     out_ << material(b.material) << " }\n";
@@ -282,7 +287,7 @@ private:
     const Mat3& m = d.frame.objectToWorld;
     out_ << "disc { ";
     if (isCircular(d)) {
-      out_ << vec(d.frame.objectToWorldOffset) << ", " << vec(d.normal) << ", "
+      out_ << povVector(d.frame.objectToWorldOffset) << ", " << povVector(d.normal) << ", "
            << num(d.radius * glm::length(m[0])) << " ";
     } else {
       out_ << "<0, 0, 0>, <0, 0, 1>, " << num(d.radius) << " "
@@ -300,7 +305,7 @@ private:
     out_ << "quadric { <" << num(k[0]) << ", " << num(k[1]) << ", " << num(k[2]) << ">, <"
          << num(k[3]) << ", " << num(k[5]) << ", " << num(k[4]) << ">, <" << num(k[6]) << ", "
          << num(k[7]) << ", " << num(k[8]) << ">, " << num(k[9]) << " clipped_by { box { "
-         << vec(q.lo) << ", " << vec(q.hi) << " } } ";
+         << povVector(q.lo) << ", " << povVector(q.hi) << " } } ";
     if (!isUnplaced(q)) out_ << matrix(q.frame.objectToWorld, q.frame.objectToWorldOffset) << " ";
     out_ << material(q.material) << " }\n";
   }
@@ -341,7 +346,7 @@ private:
   void one(const Blob& b) {
     out_ << "blob { threshold " << num(b.threshold) << "\n";
     for (const BlobComponent& c : componentsOf(b, scene_.arrays()))
-      out_ << "  sphere { " << vec(c.center) << ", " << num(c.radius) << ", strength "
+      out_ << "  sphere { " << povVector(c.center) << ", " << num(c.radius) << ", strength "
            << num(c.strength) << " }\n";
     out_ << "  sturm ";
     if (b.placed) out_ << matrix(b.frame.objectToWorld, b.frame.objectToWorldOffset) << " ";
@@ -373,8 +378,8 @@ private:
   void triangle(const Triangle& t) {
     out_ << (t.smooth() ? "  smooth_triangle { " : "  triangle { ");
     for (std::size_t k = 0; k < 3; ++k) {
-      out_ << (k ? ", " : "") << vec(scene_.meshVertices[t.vertex[k]]);
-      if (t.smooth()) out_ << ", " << vec(scene_.meshNormals[t.normal[k]]);
+      out_ << (k ? ", " : "") << povVector(scene_.meshVertices[t.vertex[k]]);
+      if (t.smooth()) out_ << ", " << povVector(scene_.meshNormals[t.normal[k]]);
     }
     out_ << " }\n";
   }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds Prism with its tests and runs the whole suite
 # twice: an optimised build, then a build under AddressSanitizer and
-# UndefinedBehaviorSanitizer; then fuzzes every reader for 40 s each. Each
+# UndefinedBehaviorSanitizer; then fuzzes every reader for 30 s each. Each
 # stage says when it starts (seconds since the script began): CI's budget is
 # 25 minutes on 2 cores.
 # Exits non-zero if anything fails.
@@ -31,6 +31,6 @@ bash "$root/.ci/build.sh" "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebIn
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$root/build-sanitize" --output-on-failure --no-tests=error -j"$(nproc)"
 
-echo "== Fuzzing the readers for a bounded time (40 s per target; docs/fuzzing.md) (at ${SECONDS} s)"
-bash "$root/.ci/fuzz.sh" 40
+echo "== Fuzzing the readers for a bounded time (30 s per target; docs/fuzzing.md) (at ${SECONDS} s)"
+bash "$root/.ci/fuzz.sh" 30
 echo "== Done (at ${SECONDS} s)"

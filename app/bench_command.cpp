@@ -241,11 +241,10 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommandOptions& o) {
   addRangedOption(*cmd, "--thresh", o.thresh, "Antialiasing threshold", 0.0, 1.0);
   addRangedOption(*cmd, "--threads", o.threads, "The \"all threads\" count (0: every core)", 0,
                   1024);
-  cmd->add_option("--budget", o.budget,
+  addRangedOption(*cmd, "--budget", o.budget,
                   "Seconds one throughput figure may take; slower ones are measured on an evenly "
-                  "spread sample of the rays (marked ~)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.01, 3600.0));
+                  "spread sample of the rays (marked ~)",
+                  0.01, 3600.0);
   cmd->add_flag("!--no-scaling", o.scaling, "Skip the scaling series on generated scenes");
   cmd->add_option("--scaling-max", o.scalingMax, "Largest scene of the scaling series")
       ->capture_default_str()

@@ -161,11 +161,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& o) {
   command->add_option("--format", o.format,
                       "With -o -: the picture's format, as an extension: png, tiff, exr, ...");
   addRenderSettingsOptions(*command, o);
-  command
-      ->add_option("--scale", o.scale,
-                   "Render at PERCENT of the scene's resolution, 0 < PERCENT <= 100 (each side "
-                   "rounded, at least 1 pixel; not with --size)")
-      ->check(CLI::PositiveNumber & CLI::Range(0.0, 100.0))
+  addRangedOption(*command, "--scale", o.scale,
+                  "Render at PERCENT of the scene's resolution, 0 < PERCENT <= 100 (each side "
+                  "rounded, at least 1 pixel; not with --size)",
+                  0.0, 100.0)
+      ->check(CLI::PositiveNumber)
       ->excludes("--size");
   command
       ->add_option("--crop", o.crop,

@@ -63,6 +63,10 @@ TEST_F(Cli, UsageErrorsExitWith2) {
   EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh -0.1").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --thresh nan").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --bailout nan").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --scale nan").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --fov nan").exitCode, 2);
+  EXPECT_EQ(prism("render " + s + " -o " + out + " --eye nan 0 0").exitCode, 2);
+  EXPECT_EQ(prism("bench " + s + " --budget nan").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --size 0 10").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --accel fast").exitCode, 2);
   EXPECT_EQ(prism("render " + s + " -o " + out + " --bailout -0.5").exitCode, 2);

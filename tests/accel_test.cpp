@@ -847,6 +847,37 @@ TEST(Accel, SlightlyNonPlanarPolygonsAreNeverCulled) {
   EXPECT_GT(tally.hits, 1000);
 }
 
+// Four unit cubes at x = 0, 2, 4 and 6: the parent box (7 x 1 x 1) has half
+// area 15, two cubes' box 7, three cubes' 11, one cube 3. Alone, a leaf of
+// the four costs 0.8 x 4 = 3.2 and the cheapest split (two and two)
+// 1 + 0.8 x (7 x 2 + 7 x 2) / 15 = 2.49, so it splits. Tested as one packet
+// (cost 1.5) the leaf costs 0.8 x 1.5 = 1.2 against 1 + 0.8 x (7 x 1.5 + 7 x
+// 1.5) / 15 = 2.12 for any split: a leaf. With the last cube not packed the
+// leaf costs 0.8 x (1.5 + 1) = 2.0 and the cheapest split (that cube alone)
+// 1 + 0.8 x (11 x 1.5 + 3 x 1) / 15 = 2.04: a leaf still.
+TEST(SahBuilder, PacketsMakeALeafOfWhatAloneWouldSplit) {
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 4; ++i) {
+    Aabb b;
+    b.extend(Vec3(2.0 * i, 0, 0));
+    b.extend(Vec3(2.0 * i + 1, 1, 1));
+    boxes.push_back(b);
+  }
+  SahOptions packets;
+  packets.packetSize = 4;
+  packets.packetCost = 1.5;
+  EXPECT_GT(buildSahTree(boxes).nodes.size(), 1u);
+  EXPECT_GT(buildSahTree(boxes, packets).nodes.size(), 1u); // no box is packed
+  const SahTree packed = buildSahTree(boxes, packets, {true, true, true, true});
+  ASSERT_EQ(packed.nodes.size(), 1u);
+  EXPECT_EQ(packed.nodes[0].count, 4u);
+  EXPECT_EQ(buildSahTree(boxes, packets, {true, true, true, false}).nodes.size(), 1u);
+  // Packets of one cost as much as the primitive alone: the split again.
+  packets.packetSize = 1;
+  packets.packetCost = 1.0;
+  EXPECT_GT(buildSahTree(boxes, packets, {true, true, true, true}).nodes.size(), 1u);
+}
+
 TEST(SahBuilder, EveryBoxInExactlyOneLeafInsideItsAncestors) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -64,6 +64,9 @@ static_assert((std::uint64_t(Bvh::kFirstMask) + 1) * (4 + 3 * kPacketPolygonVert
 inline PrimitiveRef decodeRef(std::uint32_t code) {
   return {PrimitiveKind(code >> kKindShift), code & kIndexMask};
 }
+inline std::uint32_t encodeRef(PrimitiveRef p) {
+  return std::uint32_t(p.kind) << kKindShift | p.index;
+}
 
 // Where the origin is taken to be when the near and the far bound of an
 // axis are tested: moved by boxSlack toward the far side for the near bound
@@ -548,7 +551,21 @@ void Bvh::build(const std::vector<BoxedPrimitive>& boxed) {
     boxes.push_back(b.box);
   SahOptions options;
   options.maxLeaf = std::min<std::uint32_t>(options.maxLeaf, kMaxLeaf);
-  const SahTree tree = buildSahTree(boxes, options);
+  // The triangles, which a leaf tests four at a time (emitLeaf), count four
+  // to a packet, and a packet of one to four about one and a half single
+  // tests (packets.h): of 1.0, 1.5 and 2.0, 1.5 made the one-ray walk
+  // fastest on the teapot and the height field (docs/performance.md).
+  // Polygons, packed too, still count one by one: so counted, the small
+  // ones made the leaves of tree.sc, glass.sc and table.sc larger and their
+  // bundled eye rays up to 30% slower. (Where the walk then packs no runs,
+  // packetRuns_ below, the scene has few triangles, whose cost was a little
+  // off.)
+  std::vector<bool> packed(boxed.size());
+  for (std::size_t i = 0; i < boxed.size(); ++i)
+    packed[i] = packsTriangle(scene_, encodeRef(boxed[i].primitive));
+  options.packetSize = 4;
+  options.packetCost = 1.5;
+  const SahTree tree = buildSahTree(boxes, options, packed);
 
   refs_.reserve(boxed.size());
   // An 8-wide tree has about a seventh as many nodes as the binary one has
@@ -571,8 +588,7 @@ void Bvh::build(const std::vector<BoxedPrimitive>& boxed) {
 std::uint32_t Bvh::emitLeaf(BuildContext& context, const SahTree::Node& n) {
   const auto first = std::uint32_t(refs_.size());
   for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
-    const PrimitiveRef p = context.boxed[context.tree.order[i]].primitive;
-    const std::uint32_t code = std::uint32_t(p.kind) << kKindShift | p.index;
+    const std::uint32_t code = encodeRef(context.boxed[context.tree.order[i]].primitive);
     if (std::find(refs_.begin() + first, refs_.end(), code) == refs_.end()) refs_.push_back(code);
   }
   const auto count = std::uint32_t(refs_.size()) - first;
@@ -938,21 +954,39 @@ std::uint64_t Bvh::traverseBundle(std::span<const Ray> rays, std::span<Hit> hits
         continue;
       }
     } else {
-      // (Ray by ray with the walk's packets of triangles and polygons, this
-      // was 4% to 20% slower: docs/performance.md.)
       const std::uint32_t begin = current.ref & kFirstMask;
       const std::uint32_t end = begin + ((current.ref >> kCountShift) & 0xf) + 1;
-      for (std::uint32_t p = begin; p < end; ++p) {
-        const PrimitiveRef prim = decodeRef(refs_[p]);
+      if (packetRuns_ && (current.ref & kPacketsBit) != 0 && runs_[begin].length > 0 &&
+          runs_[begin].polygonVertices == 0) {
+        // A leaf of triangles: ray by ray with the walk's packets. The
+        // hierarchy counts triangles four to a packet (build), so their
+        // leaves hold more than the rest, and primitive by primitive, as
+        // below, the teapot's and the height field's bundled eye rays ran
+        // 20% to 30% slower (docs/performance.md). (A leaf whose first
+        // reference is no triangle goes below: a leaf of several kinds is
+        // rare where triangles are.)
         for (std::uint64_t m = current.rays; m != 0; m &= m - 1) {
           const auto i = std::size_t(std::countr_zero(m));
           Interval range{0.0, rangeMax[i]};
-          double t;
-          if (intersectPrimitive(scene_, prim, rays[i], range, t)) {
-            bool rayFound = (found >> i & 1u) != 0;
-            keepNearest({t, prim}, rayFound, hits[i], range);
-            rangeMax[i] = range.max;
-            found |= std::uint64_t(1) << i;
+          bool rayFound = (found >> i & 1u) != 0;
+          std::optional<PacketTest<Lanes>> packets;
+          testLeaf<false, true>(current.ref, rays[i], range, nullptr, rayFound, &hits[i], packets);
+          rangeMax[i] = range.max;
+          if (rayFound) found |= std::uint64_t(1) << i;
+        }
+      } else {
+        for (std::uint32_t p = begin; p < end; ++p) {
+          const PrimitiveRef prim = decodeRef(refs_[p]);
+          for (std::uint64_t m = current.rays; m != 0; m &= m - 1) {
+            const auto i = std::size_t(std::countr_zero(m));
+            Interval range{0.0, rangeMax[i]};
+            double t;
+            if (intersectPrimitive(scene_, prim, rays[i], range, t)) {
+              bool rayFound = (found >> i & 1u) != 0;
+              keepNearest({t, prim}, rayFound, hits[i], range);
+              rangeMax[i] = range.max;
+              found |= std::uint64_t(1) << i;
+            }
           }
         }
       }

@@ -15,13 +15,14 @@ struct Task {
 
 struct Bin {
   Aabb box;
-  std::uint32_t count = 0;
+  std::uint32_t count = 0, packed = 0; // packed: of count, those tested in packets
 };
 
 class Builder {
 public:
-  Builder(const std::vector<Aabb>& boxes, const SahOptions& options)
-      : boxes_(boxes), options_(options), bins_(std::max(2, options.bins)) {
+  Builder(const std::vector<Aabb>& boxes, const SahOptions& options,
+          const std::vector<bool>& packed)
+      : boxes_(boxes), packed_(packed), options_(options), bins_(std::max(2, options.bins)) {
     centroids_.reserve(boxes.size());
     for (const Aabb& b : boxes) {
       // An unbounded box has no centre; 0 keeps the binning arithmetic finite.
@@ -61,6 +62,10 @@ private:
     }
     tree.nodes[task.node].box = box;
     const std::uint32_t count = task.end - task.begin;
+    std::uint32_t packed = 0;
+    if (!packed_.empty())
+      for (std::uint32_t i = task.begin; i < task.end; ++i)
+        packed += packed_[order[i]] ? 1 : 0;
     auto makeLeaf = [&] {
       tree.nodes[task.node].first = task.begin;
       tree.nodes[task.node].count = count;
@@ -72,7 +77,7 @@ private:
     if (task.depth <= options_.maxSahDepth) {
       int axis = -1, splitBin = 0;
       const double cost = bestSplit(tree.order, task, box, centres, axis, splitBin);
-      const double leafCost = options_.intersectCost * double(count);
+      const double leafCost = options_.intersectCost * tests(count, packed);
       if (count <= options_.maxLeaf && !(cost < leafCost)) return makeLeaf();
       if (axis >= 0) {
         const double lo = centres.lo[axis], scale = binScale(centres, axis);
@@ -101,6 +106,14 @@ private:
     const double extent = centres.hi[axis] - centres.lo[axis];
     // Slightly under bins/extent so the largest centroid still lands in the last bin.
     return double(bins_) * (1.0 - 1e-6) / extent;
+  }
+
+  // What testing `count` primitives costs, `packed` of them in packets,
+  // in units of one primitive's test.
+  double tests(std::uint32_t count, std::uint32_t packed) const {
+    const std::uint32_t size = std::max<std::uint32_t>(1, options_.packetSize);
+    const std::uint32_t packets = (packed + size - 1) / size;
+    return double(count - packed) + options_.packetCost * double(packets);
   }
 
   int binOf(double c, double lo, double scale) const {
@@ -135,6 +148,7 @@ private:
         Bin& bin = binScratch_[std::size_t(a)][std::size_t(binOf(c[a], lo[a], scale[a]))];
         bin.box.extend(b);
         ++bin.count;
+        if (!packed_.empty() && packed_[order[i]]) ++bin.packed;
       }
     }
     for (int a = 0; a < 3; ++a) {
@@ -142,22 +156,24 @@ private:
       const std::vector<Bin>& bins = binScratch_[std::size_t(a)];
       // rightCost[k]: area x count of bins k.. (the right side of border k).
       Aabb right;
-      std::uint32_t rightCount = 0;
+      std::uint32_t rightCount = 0, rightPacked = 0;
       for (int k = bins_ - 1; k > 0; --k) {
         right.extend(bins[std::size_t(k)].box);
         rightCount += bins[std::size_t(k)].count;
-        rightCost[std::size_t(k)] = right.halfArea() * double(rightCount);
+        rightPacked += bins[std::size_t(k)].packed;
+        rightCost[std::size_t(k)] = right.halfArea() * tests(rightCount, rightPacked);
       }
       Aabb left;
-      std::uint32_t leftCount = 0;
+      std::uint32_t leftCount = 0, leftPacked = 0;
       for (int k = 1; k < bins_; ++k) {
         left.extend(bins[std::size_t(k - 1)].box);
         leftCount += bins[std::size_t(k - 1)].count;
+        leftPacked += bins[std::size_t(k - 1)].packed;
         const std::uint32_t count = task.end - task.begin;
         if (leftCount == 0 || leftCount == count) continue;
         const double cost =
             1.0 + options_.intersectCost *
-                      (left.halfArea() * double(leftCount) + rightCost[std::size_t(k)]) /
+                      (left.halfArea() * tests(leftCount, leftPacked) + rightCost[std::size_t(k)]) /
                       parentArea;
         if (cost < best) {
           best = cost;
@@ -182,6 +198,7 @@ private:
   }
 
   const std::vector<Aabb>& boxes_;
+  const std::vector<bool>& packed_;
   SahOptions options_;
   int bins_;
   std::vector<Vec3> centroids_;
@@ -191,8 +208,9 @@ private:
 
 } // namespace
 
-SahTree buildSahTree(const std::vector<Aabb>& boxes, const SahOptions& options) {
-  return Builder(boxes, options).build();
+SahTree buildSahTree(const std::vector<Aabb>& boxes, const SahOptions& options,
+                     const std::vector<bool>& packed) {
+  return Builder(boxes, options, packed).build();
 }
 
 } // namespace prism

@@ -23,6 +23,12 @@ struct SahOptions {
   // Past this depth ranges are split at the object median, so pathological
   // inputs (exponentially spaced primitives) cannot make the tree deep.
   int maxSahDepth = 48;
+  // Primitives a leaf tests packetSize at a time (buildSahTree's `packed`)
+  // cost packetCost times intersectCost a packet begun, not each: a leaf of
+  // 4 triangles costs no more than one of 1, and splits that leave a few
+  // over are not worth their nodes. 1: every primitive costs alone.
+  std::uint32_t packetSize = 1;
+  double packetCost = 1.0;
 };
 
 struct SahTree {
@@ -40,6 +46,9 @@ struct SahTree {
 };
 
 // `boxes` must be non-empty boxes with finite or infinite (never NaN) bounds.
-SahTree buildSahTree(const std::vector<Aabb>& boxes, const SahOptions& options = {});
+// `packed`, empty or one flag a box: which boxes' primitives are tested in
+// packets (SahOptions::packetSize).
+SahTree buildSahTree(const std::vector<Aabb>& boxes, const SahOptions& options = {},
+                     const std::vector<bool>& packed = {});
 
 } // namespace prism

@@ -154,7 +154,8 @@ private:
     for (int a = 0; a < 3; ++a) {
       if (!usable[a]) continue;
       const std::vector<Bin>& bins = binScratch_[std::size_t(a)];
-      // rightCost[k]: area x count of bins k.. (the right side of border k).
+      // rightCost[k]: area x the cost of testing bins k.. (the right side of
+      // border k).
       Aabb right;
       std::uint32_t rightCount = 0, rightPacked = 0;
       for (int k = bins_ - 1; k > 0; --k) {

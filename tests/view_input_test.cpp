@@ -142,7 +142,11 @@ public:
                (dir_ / "ready.txt").string()},
               {"DISPLAY=" + display_, "XDG_CONFIG_HOME=" + (dir_ / "config").string()}, &out_, err);
     close(err);
-    ready_ = readLine(out_, 60.0) == std::optional<std::string>("ready");
+    // The script says "ready" within a frame, before that frame's widgets
+    // are dumped: the first dump may still be on its way (a test that read
+    // the widgets at once saw none).
+    ready_ = readLine(out_, 60.0) == std::optional<std::string>("ready") &&
+             waitFor([&] { return !widgets().empty(); });
   }
   ~Previewer() {
     if (pid_ > 0 && !exited_) {

@@ -56,16 +56,14 @@ private:
   void split(SahTree& tree, const Task& task, std::vector<Task>& tasks) {
     std::uint32_t* order = tree.order.data();
     Aabb box, centres;
+    std::uint32_t packed = 0;
     for (std::uint32_t i = task.begin; i < task.end; ++i) {
       box.extend(boxes_[order[i]]);
       centres.extend(centroids_[order[i]]);
+      packed += isPacked(order[i]);
     }
     tree.nodes[task.node].box = box;
     const std::uint32_t count = task.end - task.begin;
-    std::uint32_t packed = 0;
-    if (!packed_.empty())
-      for (std::uint32_t i = task.begin; i < task.end; ++i)
-        packed += packed_[order[i]] ? 1 : 0;
     auto makeLeaf = [&] {
       tree.nodes[task.node].first = task.begin;
       tree.nodes[task.node].count = count;
@@ -108,6 +106,9 @@ private:
     return double(bins_) * (1.0 - 1e-6) / extent;
   }
 
+  // 1 where box i's primitive is tested in packets, else 0.
+  std::uint32_t isPacked(std::uint32_t i) const { return !packed_.empty() && packed_[i] ? 1 : 0; }
+
   // What testing `count` primitives costs, `packed` of them in packets,
   // in units of one primitive's test.
   double tests(std::uint32_t count, std::uint32_t packed) const {
@@ -144,11 +145,12 @@ private:
     for (std::uint32_t i = task.begin; i < task.end; ++i) {
       const Vec3& c = centroids_[order[i]];
       const Aabb& b = boxes_[order[i]];
+      const std::uint32_t packed = isPacked(order[i]);
       for (int a = 0; a < 3; ++a) {
         Bin& bin = binScratch_[std::size_t(a)][std::size_t(binOf(c[a], lo[a], scale[a]))];
         bin.box.extend(b);
         ++bin.count;
-        if (!packed_.empty() && packed_[order[i]]) ++bin.packed;
+        bin.packed += packed;
       }
     }
     for (int a = 0; a < 3; ++a) {
